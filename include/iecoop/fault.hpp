@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// iecoop/fault.hpp — the one place run-time faults go: division by zero, a call through an
+// unassigned interface, an unbound VAR_IN_OUT, a watchdog overrun, ...
+//
+// A PLC stops the application with an exception on such faults. iecoop calls the fault
+// handler instead; the default handler prints the message and aborts. A handler that
+// returns lets the faulting operation finish with the defined result documented for it
+// (division by zero yields 0, for example), so tests can install a recording handler and
+// check that a fault happened. Nothing here allocates or throws.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+#include <iecoop/config.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/// What went wrong. New kinds are only ever appended.
+enum class fault_kind : std::uint8_t {
+  division_by_zero,      ///< integer or TIME division or MOD by zero
+  invalid_value,         ///< value() of a failed parse, or a similar unchecked access
+  unbound_in_out,        ///< a block body ran with a VAR_IN_OUT not bound to a variable
+  unassigned_interface,  ///< a call through an interface variable that is 0
+  watchdog,              ///< a task exceeded its watchdog time sensitivity times in a row
+  user,                  ///< raised by application code
+};
+
+/// A fault as the handler sees it. `message` points to a string literal.
+struct fault_info {
+  fault_kind kind;
+  const char* message;
+};
+
+/// A fault handler. It may return; the faulting operation then completes with its
+/// documented fallback result.
+using fault_handler = void (*)(const fault_info&);
+
+/// The short name of a fault kind, e.g. "division by zero".
+[[nodiscard]] constexpr const char* to_string(fault_kind kind) noexcept {
+  switch (kind) {
+    case fault_kind::division_by_zero: return "division by zero";
+    case fault_kind::invalid_value: return "invalid value";
+    case fault_kind::unbound_in_out: return "unbound VAR_IN_OUT";
+    case fault_kind::unassigned_interface: return "call through unassigned interface";
+    case fault_kind::watchdog: return "watchdog";
+    case fault_kind::user: return "user fault";
+  }
+  return "unknown fault";
+}
+
+/// The handler installed at start-up: prints "iecoop fault: <kind>: <message>" on stderr
+/// and aborts the program, as a PLC stops on an exception.
+[[noreturn]] inline void default_fault_handler(const fault_info& fault) {
+  std::fprintf(stderr, "iecoop fault: %s: %s\n", to_string(fault.kind), fault.message);
+  std::abort();
+}
+
+namespace detail {
+inline fault_handler current_fault_handler = &default_fault_handler;
+}  // namespace detail
+
+/// Installs `handler` (nullptr restores the default) and returns the previous one.
+/// Install handlers at start-up or in tests, not while tasks run concurrently.
+inline fault_handler set_fault_handler(fault_handler handler) noexcept {
+  const fault_handler previous = detail::current_fault_handler;
+  detail::current_fault_handler = handler != nullptr ? handler : &default_fault_handler;
+  return previous;
+}
+
+/// The handler currently installed.
+[[nodiscard]] inline fault_handler get_fault_handler() noexcept { return detail::current_fault_handler; }
+
+/// Reports a fault to the installed handler. Not constexpr on purpose: a fault reached
+/// during constant evaluation is a compile error.
+inline void fault(fault_kind kind, const char* message) { detail::current_fault_handler(fault_info{kind, message}); }
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>
