@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// iecoop/fmt.hpp — fmt support: fmt::format("{}", x) prints IEC values as ST writes them:
+// TIME as T#1s500ms, LTIME as LTIME#1ms500us, BOOL as TRUE/FALSE, STRING and WSTRING as
+// their text (WSTRING in UTF-8). Integers and REALs accept fmt's number specs ("{:04x}").
+//
+// Optional: include it where you format, and link fmt (fmt::fmt or fmt::fmt-header-only).
+// The rest of iecoop never needs fmt.
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include <iecoop/detail/utf8.hpp>
+#include <iecoop/string.hpp>
+#include <iecoop/text.hpp>
+#include <iecoop/time.hpp>
+#include <iecoop/types.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+template <class Rep, iecoop::integer_kind Kind>
+struct fmt::formatter<iecoop::integer<Rep, Kind>> : fmt::formatter<Rep> {
+  template <class Context>
+  auto format(iecoop::integer<Rep, Kind> value, Context& ctx) const {
+    return fmt::formatter<Rep>::format(value.value(), ctx);
+  }
+};
+
+template <class Rep>
+struct fmt::formatter<iecoop::real<Rep>> : fmt::formatter<Rep> {
+  template <class Context>
+  auto format(iecoop::real<Rep> value, Context& ctx) const {
+    return fmt::formatter<Rep>::format(value.value(), ctx);
+  }
+};
+
+template <>
+struct fmt::formatter<iecoop::BOOL> : fmt::formatter<std::string_view> {
+  template <class Context>
+  auto format(iecoop::BOOL value, Context& ctx) const {
+    return fmt::formatter<std::string_view>::format(value ? "TRUE" : "FALSE", ctx);
+  }
+};
+
+template <class Rep, class Period>
+struct fmt::formatter<iecoop::basic_time<Rep, Period>> : fmt::formatter<std::string_view> {
+  template <class Context>
+  auto format(iecoop::basic_time<Rep, Period> value, Context& ctx) const {
+    char text[iecoop::max_text_length<iecoop::basic_time<Rep, Period>>];
+    const char* end = iecoop::to_text(text, value);
+    return fmt::formatter<std::string_view>::format(std::string_view(text, static_cast<std::size_t>(end - text)), ctx);
+  }
+};
+
+template <std::size_t N>
+struct fmt::formatter<iecoop::iec_string<char, N>> : fmt::formatter<std::string_view> {
+  template <class Context>
+  auto format(const iecoop::iec_string<char, N>& value, Context& ctx) const {
+    return fmt::formatter<std::string_view>::format(value.view(), ctx);
+  }
+};
+
+template <std::size_t N>
+struct fmt::formatter<iecoop::iec_string<char16_t, N>> : fmt::formatter<std::string_view> {
+  template <class Context>
+  auto format(const iecoop::iec_string<char16_t, N>& value, Context& ctx) const {
+    char text[iecoop::detail::utf8_max_per_unit * N];
+    char* end = text;
+    for (const char16_t c : value.view()) end = iecoop::detail::put_utf8(end, c);
+    return fmt::formatter<std::string_view>::format(std::string_view(text, static_cast<std::size_t>(end - text)), ctx);
+  }
+};
+
+#include <iecoop/detail/pop_macros.hpp>

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// iecoop/iecoop.hpp — everything iecoop offers, in one include. (The optional integrations
+// <iecoop/fmt.hpp> and <iecoop/ostream.hpp> are not included: they pull in fmt and
+// <ostream>, which the core never needs.)
+#pragma once
+
+// IWYU pragma: begin_exports
+#include <iecoop/config.hpp>
+#include <iecoop/conversions.hpp>
+#include <iecoop/convert.hpp>
+#include <iecoop/fault.hpp>
+#include <iecoop/literals.hpp>
+#include <iecoop/string.hpp>
+#include <iecoop/string_functions.hpp>
+#include <iecoop/text.hpp>
+#include <iecoop/time.hpp>
+#include <iecoop/types.hpp>
+// IWYU pragma: end_exports

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// iecoop/ostream.hpp — operator<< for IEC values, printing them as ST writes them (TIME as
+// T#1s500ms, BOOL as TRUE/FALSE, WSTRING in UTF-8). Optional: the core never needs
+// <ostream>; include this for iostreams, or for readable values in failed test assertions.
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string_view>
+
+#include <iecoop/detail/utf8.hpp>
+#include <iecoop/string.hpp>
+#include <iecoop/text.hpp>
+#include <iecoop/time.hpp>
+#include <iecoop/types.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+namespace detail {
+template <class T>
+std::ostream& print_text(std::ostream& os, T value) {
+  char text[max_text_length<T>];
+  const char* end = to_text(text, value);
+  return os << std::string_view(text, static_cast<std::size_t>(end - text));
+}
+}  // namespace detail
+
+inline std::ostream& operator<<(std::ostream& os, BOOL value) { return detail::print_text(os, value); }
+
+template <class Rep, integer_kind Kind>
+std::ostream& operator<<(std::ostream& os, integer<Rep, Kind> value) {
+  return detail::print_text(os, value);
+}
+
+template <class Rep>
+std::ostream& operator<<(std::ostream& os, real<Rep> value) {
+  return detail::print_text(os, value);
+}
+
+template <class Rep, class Period>
+std::ostream& operator<<(std::ostream& os, basic_time<Rep, Period> value) {
+  return detail::print_text(os, value);
+}
+
+template <std::size_t N>
+std::ostream& operator<<(std::ostream& os, const iec_string<char, N>& value) {
+  return os << value.view();
+}
+
+template <std::size_t N>
+std::ostream& operator<<(std::ostream& os, const iec_string<char16_t, N>& value) {
+  for (const char16_t c : value.view()) {
+    char utf8[detail::utf8_max_per_unit];
+    const char* end = detail::put_utf8(utf8, c);
+    os.write(utf8, end - utf8);
+  }
+  return os;
+}
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>
