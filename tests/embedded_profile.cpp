@@ -1,0 +1,39 @@
+// The core in use with -fno-exceptions -fno-rtti, as a firmware build compiles it: types,
+// literals, strings, string functions, conversions and the fault path. Returns 0 when
+// every result is right.
+#include <iecoop/iecoop.hpp>
+
+namespace {
+int faults = 0;
+void count_fault(const iecoop::fault_info&) { ++faults; }
+}  // namespace
+
+int main() {
+  using namespace iecoop;
+  set_fault_handler(&count_fault);
+  int failures = 0;
+  const auto expect = [&failures](bool ok) { failures += ok ? 0 : 1; };
+
+  INT counter = 32767;
+  counter = counter + 1;
+  expect(counter == -32768);
+
+  const DINT zero = faults;  // 0, unknown to the compiler
+  expect(DINT(10) / zero == 0 && faults == 1);
+
+  TIME pt = "T#1h2m3s4ms"_iec;
+  pt += "T#996ms"_iec;
+  expect(TIME_TO_DINT(pt) == 3724000);
+  expect(TIME_TO_STRING(pt) == "T#1h2m4s");
+  expect(STRING_TO_TIME("T#1.5s") == "T#1500ms"_iec);
+  expect(!parse_time("t#5m68s") && parse_time("t#5m68s").error() == parse_error::unit_overflow);
+
+  STRING<12> name = "conveyor belt one";
+  expect(name == "conveyor bel" && LEN(name) == 12);
+  expect(CONCAT(LEFT(name, 4), "-", MID(name, 3, 10)) == "conv-bel");
+  expect(FIND(name, "belt") == 0 && FIND(name, "bel") == 10);
+  expect(REAL_TO_INT(REAL(2.5f)) == 3 && INT_TO_SINT(4223) == 127);
+  expect(WSTRING_TO_STRING(STRING_TO_WSTRING(name)) == name);
+
+  return failures;
+}

@@ -1,0 +1,28 @@
+// iecoop injects nothing into the global namespace: after including every header, the
+// global namespace may declare all of iecoop's names for itself and use them unambiguously
+// (a using-declaration would clash, a using-directive would make each use ambiguous).
+#include <iecoop/iecoop.hpp>
+#include <iecoop/fmt.hpp>
+#include <iecoop/ostream.hpp>
+
+#include <cstddef>
+
+int BOOL = 1, BYTE = 2, WORD = 3, DWORD = 4, LWORD = 5, SINT = 6, INT = 7, DINT = 8, LINT = 9, USINT = 10, UINT = 11,
+    UDINT = 12, ULINT = 13, REAL = 14, LREAL = 15, TIME = 16, LTIME = 17, STRING = 18, WSTRING = 19, TRUE = 20,
+    FALSE = 21, LEN = 22, LEFT = 23, RIGHT = 24, MID = 25, CONCAT = 26, INSERT = 27, DELETE = 28, REPLACE = 29,
+    FIND = 30, INT_TO_DINT = 31, TO_INT = 32, TRUNC = 33, convert = 34, fault = 35, parse_time = 36, integer = 37,
+    basic_time = 38, iec_string = 39, conversion = 40, to_text = 41, parse_result = 42, AnyInt = 43, literals = 44;
+int operator""_iec(const char*, std::size_t) { return 45; }
+
+int sum_of_globals() {
+  return BOOL + BYTE + WORD + DWORD + LWORD + SINT + INT + DINT + LINT + USINT + UINT + UDINT + ULINT + REAL + LREAL +
+         TIME + LTIME + STRING + WSTRING + TRUE + FALSE + LEN + LEFT + RIGHT + MID + CONCAT + INSERT + DELETE +
+         REPLACE + FIND + INT_TO_DINT + TO_INT + TRUNC + convert + fault + parse_time + integer + basic_time +
+         iec_string + conversion + to_text + parse_result + AnyInt + literals + "x"_iec;
+}
+
+#include "iecoop_test.hpp"
+
+TEST_CASE("the global namespace keeps every IEC name for itself") {
+  CHECK(sum_of_globals() == 45 * 46 / 2);
+}

@@ -1,0 +1,29 @@
+// <iecoop/ostream.hpp>: operator<< prints IEC values as ST writes them.
+#include "iecoop_test.hpp"
+
+#include <sstream>
+#include <string>
+
+using namespace iecoop;
+
+namespace {
+template <class T>
+std::string printed(const T& value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+}  // namespace
+
+TEST_SUITE("ostream") {
+  TEST_CASE("IEC values print as ST writes them") {
+    CHECK(printed("T#1h2m3s4ms"_iec) == "T#1h2m3s4ms");
+    CHECK(printed("LTIME#1us"_iec) == "LTIME#1us");
+    CHECK(printed(TRUE) == "TRUE");
+    CHECK(printed(SINT(-128)) == "-128");
+    CHECK(printed(BYTE(200)) == "200");
+    CHECK(printed(REAL(0.5f)) == "0.5");
+    CHECK(printed(STRING<>("abc")) == "abc");
+    CHECK(printed(WSTRING<>(u"\u00e4")) == "\xC3\xA4");
+  }
+}
