@@ -1,0 +1,11 @@
+#!/bin/sh
+# Builds and runs the iecoop demo (Release). Arguments are passed to the demo.
+# Installs the Debian packages it needs first.
+set -eu
+cd "$(dirname "$0")/.."
+. tools/require_packages.sh
+iecoop_require_packages cmake make g++ libfmt-dev
+
+cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_BENCH=OFF >/dev/null
+cmake --build build/demo --target iecoop_demo -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
+exec ./build/demo/examples/iecoop_demo "$@"
