@@ -55,7 +55,12 @@ using fault_handler = void (*)(const fault_info&);
 /// The handler installed at start-up: prints "iecoop fault: <kind>: <message>" on stderr
 /// and aborts the program, as a PLC stops on an exception.
 [[noreturn]] inline void default_fault_handler(const fault_info& fault) {
-  std::fprintf(stderr, "iecoop fault: %s: %s\n", to_string(fault.kind), fault.message);
+  // fputs rather than fprintf: on a microcontroller this keeps printf's formatting code out.
+  std::fputs("iecoop fault: ", stderr);
+  std::fputs(to_string(fault.kind), stderr);
+  std::fputs(": ", stderr);
+  std::fputs(fault.message, stderr);
+  std::fputs("\n", stderr);
   std::abort();
 }
 

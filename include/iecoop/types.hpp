@@ -46,6 +46,7 @@ class BOOL {
   explicit constexpr operator bool() const noexcept { return value_; }
 
   friend constexpr bool operator==(BOOL a, BOOL b) noexcept { return a.value_ == b.value_; }
+  friend constexpr std::strong_ordering operator<=>(BOOL a, BOOL b) noexcept { return a.value_ <=> b.value_; }
   friend constexpr BOOL operator!(BOOL a) noexcept { return BOOL(!a.value_); }
   friend constexpr BOOL operator&(BOOL a, BOOL b) noexcept { return BOOL(a.value_ && b.value_); }
   friend constexpr BOOL operator|(BOOL a, BOOL b) noexcept { return BOOL(a.value_ || b.value_); }

@@ -264,6 +264,8 @@ TEST_SUITE("elementary types") {
     CHECK(branch == 2);
     const BOOL comparison = INT(5) > 3;
     CHECK(comparison == TRUE);
+    CHECK(FALSE < TRUE);  // IEC orders BOOL: FALSE < TRUE
+    CHECK(TRUE >= TRUE);
   }
 
   TEST_CASE("REAL and LREAL behave as their floating type with IEC's conversions") {
