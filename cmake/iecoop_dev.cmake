@@ -4,7 +4,7 @@
 add_library(iecoop_warnings INTERFACE)
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   target_compile_options(iecoop_warnings INTERFACE -Wall -Wextra -Wpedantic
-    -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast -Wnon-virtual-dtor
+    -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast
     $<$<BOOL:${IECOOP_WERROR}>:-Werror>)
 elseif(MSVC)
   target_compile_options(iecoop_warnings INTERFACE /W4 /permissive- $<$<BOOL:${IECOOP_WERROR}>:/WX>)

@@ -27,6 +27,7 @@ enum class fault_kind : std::uint8_t {
   unassigned_interface,  ///< a call through an interface variable that is 0
   watchdog,              ///< a task exceeded its watchdog time sensitivity times in a row
   user,                  ///< raised by application code
+  duplicate_program,     ///< a second instance of a PROGRAM while the first one lives
 };
 
 /// A fault as the handler sees it. `message` points to a string literal.
@@ -48,6 +49,7 @@ using fault_handler = void (*)(const fault_info&);
     case fault_kind::unassigned_interface: return "call through unassigned interface";
     case fault_kind::watchdog: return "watchdog";
     case fault_kind::user: return "user fault";
+    case fault_kind::duplicate_program: return "second PROGRAM instance";
   }
   return "unknown fault";
 }

@@ -5,14 +5,23 @@
 #pragma once
 
 // IWYU pragma: begin_exports
+#include <iecoop/access.hpp>
 #include <iecoop/config.hpp>
 #include <iecoop/conversions.hpp>
 #include <iecoop/convert.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/function_block.hpp>
+#include <iecoop/lifecycle.hpp>
 #include <iecoop/literals.hpp>
+#include <iecoop/method.hpp>
+#include <iecoop/named.hpp>
+#include <iecoop/pins.hpp>
+#include <iecoop/program.hpp>
+#include <iecoop/reflect.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/string_functions.hpp>
 #include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
 #include <iecoop/types.hpp>
+#include <iecoop/var.hpp>
 // IWYU pragma: end_exports

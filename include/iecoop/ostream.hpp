@@ -13,6 +13,7 @@
 #include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
 #include <iecoop/types.hpp>
+#include <iecoop/var.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
@@ -57,6 +58,20 @@ std::ostream& operator<<(std::ostream& os, const iec_string<char16_t, N>& value)
     os.write(utf8, end - utf8);
   }
   return os;
+}
+
+template <class T, class Owner>
+std::ostream& operator<<(std::ostream& os, const local<T, Owner>& variable) {
+  return os << variable.get();
+}
+template <class T>
+std::ostream& operator<<(std::ostream& os, const in_out<T>& variable) {
+  if (!variable.bound()) return os << "<unbound VAR_IN_OUT>";
+  return os << variable.get();
+}
+template <class T>
+std::ostream& operator<<(std::ostream& os, const output<T>& variable) {
+  return os << variable.get();
 }
 
 }  // namespace iecoop

@@ -1,0 +1,94 @@
+// Seed: "CoDeSys一些基本概念" (Chinese concepts page), programs — "A program can be called by
+// other POUs; values assigned to its parameters in parentheses after its name, inputs with
+// ':=' and outputs with '=>'. A program has no instances: its values persist between calls,
+// whoever calls it."
+//
+// The seed describes the call without code; this is the obvious program: PRG_Counter adds
+// its input to a running total, and PLC_PRG calls it with := and =>.
+#include <doctest/doctest.h>
+
+#include <iecoop/iecoop.hpp>
+#include <iecoop/ostream.hpp>
+
+namespace seed_program_call {
+
+using namespace iecoop;
+
+// PROGRAM PRG_Counter
+struct PRG_Counter : program<PRG_Counter> {
+  // VAR_INPUT  iStep : INT; bReset : BOOL; END_VAR
+  INT iStep;
+  BOOL bReset;
+  // VAR_OUTPUT iTotal : INT; END_VAR
+  INT iTotal;
+  // VAR        iCalls : INT; END_VAR
+  var<INT> iCalls;
+
+  using VAR_INPUT = pins<&PRG_Counter::iStep, &PRG_Counter::bReset>;
+  using VAR_OUTPUT = pins<&PRG_Counter::iTotal>;
+
+  void body() {
+    iCalls = iCalls + 1;      // iCalls := iCalls + 1;
+    if (bReset) {             // IF bReset THEN
+      iTotal = 0;             //     iTotal := 0;
+    } else {                  // ELSE
+      iTotal = iTotal + iStep;  //   iTotal := iTotal + iStep;
+    }                         // END_IF
+  }
+};
+
+// PROGRAM PLC_PRG
+struct PLC_PRG : program<PLC_PRG> {
+  // VAR iResult : INT; END_VAR
+  var<INT> iResult;
+
+  void body() {
+    INT result;
+    PRG_Counter::instance()("iStep"_ = 5, "bReset"_ = FALSE, "iTotal"_ >> result);  // PRG_Counter(iStep := 5, bReset := FALSE, iTotal => iResult);
+    iResult = result;
+  }
+};
+
+}  // namespace seed_program_call
+
+using namespace iecoop;
+using seed_program_call::PLC_PRG;
+using seed_program_call::PRG_Counter;
+
+namespace {
+int duplicate_faults = 0;
+void count_duplicates(const fault_info& fault) {
+  if (fault.kind == fault_kind::duplicate_program) ++duplicate_faults;
+}
+}  // namespace
+
+TEST_SUITE("seed: PROGRAM called with := and =>") {
+  TEST_CASE("a program keeps its values between calls, whoever calls it") {
+    PRG_Counter counter;  // the one instance
+    PLC_PRG plc_prg;
+    plc_prg();
+    plc_prg();
+    CHECK(plc_prg.iResult == 10);
+    // Another caller: inputs not given keep their values (iStep is still 5).
+    INT total;
+    PRG_Counter::instance()("iTotal"_ >> total);
+    CHECK(total == 15);
+    CHECK(counter.iCalls == 3);
+    PRG_Counter::instance()("bReset"_ = TRUE);
+    CHECK(counter.iTotal == 0);
+  }
+
+  TEST_CASE("a program has exactly one instance") {
+    duplicate_faults = 0;
+    PRG_Counter first;
+    CHECK(&PRG_Counter::instance() == &first);
+    {
+      const fault_handler previous = set_fault_handler(&count_duplicates);
+      PRG_Counter second;  // a second instance while the first lives: a fault
+      set_fault_handler(previous);
+      CHECK(duplicate_faults == 1);
+      CHECK(&PRG_Counter::instance() == &first);
+    }
+    CHECK(PRG_Counter::exists());
+  }
+}

@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// iecoop/detail/any_field.hpp — a stand-in for "some field" when iecoop counts the fields of
+// an aggregate. Types with converting constructor templates exclude it (see iec_string),
+// because such a constructor and any_field's conversion would otherwise be ambiguous.
+// IWYU pragma: private, include <iecoop/reflect.hpp>
+#pragma once
+
+namespace iecoop::detail {
+
+/// Converts to (an lvalue of) any type. Never defined: used only in unevaluated probes.
+struct any_field {
+  template <class T>
+  constexpr operator T&() const noexcept;  // NOLINT: implicit on purpose
+};
+
+}  // namespace iecoop::detail

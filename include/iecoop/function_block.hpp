@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: MIT
+// iecoop/function_block.hpp — FUNCTION_BLOCK and EXTENDS: a block is a class whose body runs
+// on each call, with ST's two call forms.
+//
+//     // FUNCTION_BLOCK FB_Motor
+//     struct FB_Motor : iecoop::function_block<FB_Motor> {
+//       BOOL bStart;                 // VAR_INPUT
+//       BOOL bRunning;               // VAR_OUTPUT
+//       var<INT> nStarts;            // VAR
+//       using VAR_INPUT = iecoop::pins<&FB_Motor::bStart>;
+//       using VAR_OUTPUT = iecoop::pins<&FB_Motor::bRunning>;
+//       void body() {                // the implementation
+//         if (bStart & !bRunning) nStarts = nStarts + 1;
+//         bRunning = bStart;
+//       }
+//     };
+//
+//     motor.bStart = TRUE; motor();                    // ST: motor.bStart := TRUE; motor();
+//     motor("bStart"_ = TRUE, "bRunning"_ >> running);  // ST: motor(bStart := TRUE, bRunning => running);
+//
+// An input left out of a call keeps its value. A block without virtual functions is exactly
+// as large as its variables.
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/fault.hpp>
+#include <iecoop/named.hpp>
+#include <iecoop/pins.hpp>
+#include <iecoop/var.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/// The door through which iecoop calls a block's body and lifecycle methods. A block that
+/// keeps them private grants access with `friend struct iecoop::block_access;`.
+struct block_access {
+  template <class B>
+  static void body(B& block) {
+    block.body();
+  }
+  template <class B, class... P>
+  static auto fb_init(B& block, P&&... params) {
+    return block.FB_Init(std::forward<P>(params)...);
+  }
+  template <class B>
+  static auto fb_exit(B& block, BOOL in_copy_code) {
+    return block.FB_Exit(in_copy_code);
+  }
+  template <class B>
+  static auto fb_reinit(B& block) {
+    return block.FB_Reinit();
+  }
+};
+
+namespace detail {
+
+template <class B>
+concept has_body = requires(B& b) { block_access::body(b); };
+
+template <class B, class Pins, std::size_t... I>
+constexpr bool all_bound(const B& block, std::index_sequence<I...>) {
+  return ((block.*pin<Pins, I>).bound() && ...);
+}
+
+template <class Pins>
+inline constexpr bool names_unique = unique_names<Pins>();
+
+template <class B>
+constexpr void check_interface() {
+  using all = typename concat_pins<typename concat_pins<inputs_of<B>, outputs_of<B>>::type, in_outs_of<B>>::type;
+  static_assert(names_unique<all>,
+                "iecoop: two pins of the block have the same name; a derived block may not redeclare a variable of its base");
+}
+
+/// Applies `Name := value` to a block: assigns an input, or binds an in-out.
+template <class B, NamedInput A>
+constexpr void apply_input(B& block, A&& argument) {
+  using arg = std::remove_cvref_t<A>;
+  constexpr std::size_t input = inputs_of<B>::index_of(arg::name);
+  constexpr std::size_t in_out = in_outs_of<B>::index_of(arg::name);
+  if constexpr (input < inputs_of<B>::size) {
+    assign_argument(block.*pin<inputs_of<B>, input>, std::forward<A>(argument).value);
+  } else if constexpr (in_out < in_outs_of<B>::size) {
+    static_assert(std::is_lvalue_reference_v<decltype(argument.value)>,
+                  "iecoop: a VAR_IN_OUT needs a variable to refer to, not a value; pass a variable (\"x\"_ = myVar)");
+    (block.*pin<in_outs_of<B>, in_out>).bind(argument.value);
+  } else {
+    static_assert(dependent_false<A>,
+                  "iecoop: the block has no VAR_INPUT or VAR_IN_OUT of this name (see \"name\"_ in the instantiation); "
+                  "check the spelling, and that the block lists it in VAR_INPUT or VAR_IN_OUT");
+  }
+}
+
+/// Applies `Name => target` after a call: copies an output to the caller's variable.
+template <class B, NamedOutput A>
+constexpr void apply_output(const B& block, const A& argument) {
+  using arg = std::remove_cvref_t<A>;
+  constexpr std::size_t output = outputs_of<B>::index_of(arg::name);
+  if constexpr (output < outputs_of<B>::size) {
+    const auto& value = block.*pin<outputs_of<B>, output>;
+    static_assert(std::is_assignable_v<typename arg::target_type&, decltype(value)>,
+                  "iecoop: the output does not convert to the variable after =>; give the variable the output's type");
+    *argument.target = value;
+  } else {
+    static_assert(dependent_false<A>,
+                  "iecoop: the block has no VAR_OUTPUT of this name (see \"name\"_ in the instantiation); only "
+                  "outputs can be read with =>, and the block must list them in VAR_OUTPUT");
+  }
+}
+
+/// One call of a block: inputs, body, outputs (ST: inst(IN := x, Q => y)).
+template <class B, class... A>
+void call_block(B& block, A&&... arguments) {
+  static_assert(has_body<B>,
+                "iecoop: a function block needs its code as `void body()` (public, or private with "
+                "`friend struct iecoop::block_access;`)");
+  check_interface<B>();
+  (
+      [&] {
+        if constexpr (NamedInput<A>) apply_input(block, std::forward<A>(arguments));
+      }(),
+      ...);
+  using in_outs = in_outs_of<B>;
+  if (!all_bound<B, in_outs>(block, std::make_index_sequence<in_outs::size>{})) {
+    fault(fault_kind::unbound_in_out, "a block was called with a VAR_IN_OUT not bound to a variable; its body did not run");
+  } else {
+    block_access::body(block);
+  }
+  (
+      [&] {
+        if constexpr (NamedOutput<A>) apply_output(block, arguments);
+      }(),
+      ...);
+}
+
+template <class B, class... A>
+constexpr B& assign_inputs(B& block, A&&... arguments) {
+  (apply_input(block, std::forward<A>(arguments)), ...);
+  return block;
+}
+
+}  // namespace detail
+
+/**
+ * The base of a FUNCTION_BLOCK `Self` (CRTP): `struct FB : iecoop::function_block<FB>`.
+ *
+ * `Self` provides `void body()` (the block's code) and, to be callable with named
+ * parameters, lists its interface as `using VAR_INPUT = iecoop::pins<...>` (likewise
+ * VAR_OUTPUT and VAR_IN_OUT). Inside the block, `var<T>` declares a local (VAR).
+ */
+template <class Self>
+class function_block {
+ public:
+  /// VAR ... END_VAR inside Self: readable from outside, written only by Self.
+  template <class T>
+  using var = local<T, Self>;
+
+  /// ST: `inst();` — runs the body with the inputs as they are.
+  void operator()() { detail::call_block(self()); }
+
+  /// ST: `inst(IN := x, PT := t, Q => q);` — assigns the named inputs (and binds the named
+  /// in-outs), runs the body, then copies the named outputs out. Inputs not named keep
+  /// their values.
+  template <NamedArgument... A>
+    requires(sizeof...(A) > 0)
+  void operator()(A&&... arguments) {
+    detail::call_block(self(), std::forward<A>(arguments)...);
+  }
+
+  /// Assigns named inputs without running the body, and returns the block, so that an
+  /// action can follow: ST's `inst.Reset(In := FALSE);` is `inst.with("In"_ = FALSE).Reset();`.
+  template <NamedInput... A>
+  Self& with(A&&... arguments) {
+    return detail::assign_inputs(self(), std::forward<A>(arguments)...);
+  }
+
+ protected:
+  constexpr function_block() noexcept = default;
+  constexpr function_block(const function_block&) noexcept = default;
+  constexpr function_block& operator=(const function_block&) noexcept = default;
+  ~function_block() = default;
+
+ private:
+  Self& self() noexcept { return static_cast<Self&>(*this); }
+};
+
+/**
+ * `struct Derived : iecoop::extends<Derived, Base>` is ST's `FUNCTION_BLOCK Derived EXTENDS Base`.
+ *
+ * Derived is a Base wherever one is expected. Inside Derived, `SUPER::M()` is ST's
+ * `SUPER^.M()` (the base implementation), `SUPER::body()` is `SUPER^()` (the base body), and
+ * `this->M()` is `THIS^.M()` (the most derived override). Base must be polymorphic: CODESYS
+ * dispatches the body and methods of a block hierarchy virtually, so declare
+ * `virtual void body()` (and `virtual` methods) in the base and `override` them here.
+ * `using extends::extends;` makes Derived take Base's constructor (FB_Init) parameters.
+ */
+template <class Derived, class Base>
+class extends : public Base {
+  static_assert(std::is_polymorphic_v<Base>,
+                "iecoop: a block that is extended must dispatch its body virtually, as CODESYS does: declare "
+                "`virtual void body()` in the base block (and override it in the derived one)");
+  static_assert(!std::is_final_v<Base>, "iecoop: a FINAL block cannot be extended");
+
+ public:
+  /// ST's SUPER^: the base block (`SUPER::M()`, `SUPER::body()`).
+  using SUPER = Base;
+  /// The base block, for iecoop's bookkeeping of inherited pins.
+  using iecoop_base_block = Base;
+  template <class T>
+  using var = local<T, Derived>;
+
+  using Base::Base;
+
+  void operator()() { detail::call_block(self()); }
+  template <NamedArgument... A>
+    requires(sizeof...(A) > 0)
+  void operator()(A&&... arguments) {
+    detail::call_block(self(), std::forward<A>(arguments)...);
+  }
+  template <NamedInput... A>
+  Derived& with(A&&... arguments) {
+    return detail::assign_inputs(self(), std::forward<A>(arguments)...);
+  }
+
+ private:
+  Derived& self() noexcept { return static_cast<Derived&>(*this); }
+};
+
+/// A FUNCTION_BLOCK type (made with function_block<> or extends<>).
+template <class T>
+concept FunctionBlock = detail::has_body<T> && std::is_class_v<T>;
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>

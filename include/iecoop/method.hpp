@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// iecoop/method.hpp — the variables of a METHOD (and of a FUNCTION): args<Vars>.
+//
+// A method declares its VAR_INPUT, VAR_IN_OUT and VAR_OUTPUT as a plain struct, with the
+// initial values of optional inputs, and takes them as args<Vars>:
+//
+//     // METHOD PUBLIC DoIt : BOOL
+//     // VAR_INPUT iInput_1 : DWORD; iInput_2 : DWORD; sInput_3 : STRING(12); END_VAR
+//     struct DoIt_vars {
+//       DWORD iInput_1;
+//       DWORD iInput_2;
+//       STRING<12> sInput_3;
+//     };
+//     BOOL DoIt(args<DoIt_vars> in) { return in.iInput_1 == in.iInput_2; }
+//
+// and callers pass the arguments in braces, named in any order, or positionally:
+//
+//     fb.DoIt({"sInput_3"_ = "Hello World ", "iInput_2"_ = 0xFFFF, "iInput_1"_ = 16});
+//     fb.DoIt({16, 0x0010, "Hello World "});
+//     fb.DoIt({"iInput_1"_ = 16});        // the others take their declared initial values
+//
+// Every call starts from the declared initial values (method variables are temporary), an
+// output named with `"x"_ >> y` is copied to y when the call returns, and an in-out binds to
+// the variable passed. A one-argument call needs no braces: fb.M_Add(3).
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/named.hpp>
+#include <iecoop/reflect.hpp>
+#include <iecoop/var.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+template <class Vars>
+class args;
+
+namespace detail {
+
+template <class T>
+struct is_args : std::false_type {};
+template <class V>
+struct is_args<args<V>> : std::true_type {};
+
+template <class Vars>
+constexpr std::size_t find_first_output() noexcept {
+  return []<std::size_t... I>(std::index_sequence<I...>) {
+    std::size_t found = sizeof...(I);
+    ((found == sizeof...(I) && is_output<field_type<Vars, I>>::value ? (found = I, 0) : 0), ...);
+    return found;
+  }(std::make_index_sequence<field_count<Vars>>{});
+}
+
+// Positional arguments come first, named ones after them (as IEC never mixes the two in a
+// way that puts a positional argument after a named one).
+template <class... A>
+constexpr bool positional_first() noexcept {
+  bool named_seen = false;
+  bool ok = true;
+  ((named_seen && !NamedArgument<A> ? ok = false : false, named_seen = named_seen || NamedArgument<A>), ...);
+  return ok;
+}
+
+}  // namespace detail
+
+/// The position of the first VAR_OUTPUT in Vars (field_count<Vars> if there is none).
+template <Reflectable Vars>
+inline constexpr std::size_t first_output_index = detail::find_first_output<Vars>();
+
+/// The type of the first VAR_OUTPUT in Vars: the return type of a method declared without
+/// one (CODESYS: "the first declared output is used as the return value").
+template <Reflectable Vars>
+using first_output_t = typename field_type<Vars, first_output_index<Vars>>::value_type;
+
+/**
+ * The variables of one call of a METHOD or FUNCTION, built from the call's arguments. It
+ * is-a `Vars`, so the body reads them as `in.iInput_1`.
+ */
+template <class Vars>
+class args : public Vars {
+  static_assert(Reflectable<Vars>,
+                "iecoop: a METHOD's or FUNCTION's variables are a plain struct (an aggregate of at most 32 fields, "
+                "without base classes or C arrays)");
+
+ public:
+  using vars_type = Vars;
+
+  /// No arguments: every variable at its declared initial value.
+  constexpr args() : Vars() {}
+  constexpr args(const Vars& vars) : Vars(vars) {}  // NOLINT: the variables, filled elsewhere
+
+  /// Arguments positionally (in declaration order), then named in any order.
+  template <class... A>
+    requires(sizeof...(A) > 0 && !(sizeof...(A) == 1 && (std::is_base_of_v<Vars, std::remove_cvref_t<A>> && ...)))
+  constexpr args(A&&... arguments) : Vars() {  // NOLINT: a call's argument list
+    static_assert(detail::positional_first<A...>(),
+                  "iecoop: positional arguments come before named ones; name all arguments after the first named one");
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (apply<K>(std::forward<A>(arguments)), ...);
+    }(std::index_sequence_for<A...>{});
+  }
+
+  /// The value of the first VAR_OUTPUT: `return in.first_output();` in a method declared
+  /// without return type (its C++ return type is first_output_t<Vars>).
+  template <class V = Vars>
+    requires(first_output_index<V> < field_count<V>)
+  [[nodiscard]] constexpr const first_output_t<V>& first_output() const noexcept {
+    return get_field<first_output_index<V>>(static_cast<const V&>(*this)).get();
+  }
+
+ private:
+  template <std::size_t Position, class A>
+  constexpr void apply(A&& argument) {
+    using arg = std::remove_cvref_t<A>;
+    if constexpr (NamedInput<A>) {
+      constexpr std::size_t index = field_index<Vars>(arg::name);
+      static_assert(index < field_count<Vars>,
+                    "iecoop: the method or function has no variable of this name (see \"name\"_ in the instantiation)");
+      store<index>(std::forward<A>(argument).value);
+    } else if constexpr (NamedOutput<A>) {
+      constexpr std::size_t index = field_index<Vars>(arg::name);
+      static_assert(index < field_count<Vars>,
+                    "iecoop: the method or function has no variable of this name (see \"name\"_ in the instantiation)");
+      using field = field_type<Vars, index>;
+      if constexpr (detail::is_output<field>::value) {
+        static_assert(std::is_same_v<typename field::value_type, typename arg::target_type>,
+                      "iecoop: the variable after => must have the output's type");
+        get_field<index>(static_cast<Vars&>(*this)).bind_result(argument.target);
+      } else {
+        static_assert(detail::dependent_false<A>, "iecoop: only a VAR_OUTPUT (declared as output<T>) can be read with =>");
+      }
+    } else {
+      static_assert(Position < field_count<Vars>, "iecoop: more arguments than the method or function has variables");
+      store<Position>(std::forward<A>(argument));
+    }
+  }
+
+  template <std::size_t Index, class V>
+  constexpr void store(V&& value) {
+    using field = field_type<Vars, Index>;
+    auto& target = get_field<Index>(static_cast<Vars&>(*this));
+    if constexpr (detail::is_in_out<field>::value) {
+      static_assert(std::is_lvalue_reference_v<V>,
+                    "iecoop: a VAR_IN_OUT needs a variable to refer to, not a value; pass a variable");
+      target.bind(value);
+    } else if constexpr (detail::is_output<field>::value) {
+      static_assert(detail::dependent_false<V>,
+                    "iecoop: a VAR_OUTPUT is not passed in; read it after the call with \"name\"_ >> variable");
+    } else {
+      assign_argument(target, std::forward<V>(value));
+    }
+  }
+};
+
+namespace detail {
+template <class F>
+struct call_signature;
+template <class C, class R, class P>
+struct call_signature<R (C::*)(P) const> {
+  using parameter = std::remove_cvref_t<P>;
+};
+template <class C, class R, class P>
+struct call_signature<R (C::*)(P) const noexcept> {
+  using parameter = std::remove_cvref_t<P>;
+};
+}  // namespace detail
+
+/**
+ * A FUNCTION: stateless code with one return value and any number of extra outputs, made
+ * from a lambda that takes its variables as args<Vars>.
+ *
+ *     // FUNCTION F_Add : INT  VAR_INPUT a, b : INT; END_VAR  VAR_OUTPUT carry : BOOL; END_VAR
+ *     struct F_Add_vars { INT a; INT b; output<BOOL> carry; };
+ *     inline constexpr iecoop::function F_Add = [](args<F_Add_vars> in) -> INT { ... };
+ *
+ *     INT s = F_Add("a"_ = 1, "b"_ = 2, "carry"_ >> c);  // ST: s := F_Add(a := 1, b := 2, carry => c);
+ *     INT t = F_Add(1, 2);                              // ST: t := F_Add(1, 2);
+ */
+template <class Impl>
+class function {
+  using vars_args = typename detail::call_signature<decltype(&Impl::operator())>::parameter;
+  static_assert(detail::is_args<vars_args>::value,
+                "iecoop: a FUNCTION's lambda takes its variables as one parameter of type args<Vars>");
+
+ public:
+  constexpr function(Impl impl) noexcept : impl_(impl) {}  // NOLINT: `function F = [](args<V>) {...};`
+
+  template <class... A>
+  constexpr decltype(auto) operator()(A&&... arguments) const {
+    return impl_(vars_args(std::forward<A>(arguments)...));
+  }
+
+ private:
+  Impl impl_;
+};
+template <class Impl>
+function(Impl) -> function<Impl>;
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>
