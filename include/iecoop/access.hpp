@@ -7,15 +7,15 @@
 //   INTERNAL   an internal_access<Library> parameter: only inside the library
 //
 // C++ has no "visible in this namespace only", so INTERNAL is a pass key: a library names
-// itself with a tag type, its POUs derive from member_of<Tag>, and an INTERNAL method takes
-// internal_access<Tag> as its first parameter. Only the library's POUs can make one
+// itself with a tag type, its POUs derive from member_of<Tag, Self>, and an INTERNAL method
+// takes internal_access<Tag> as its first parameter. Only the library's POUs can make one
 // (`internal()`), so code outside the library cannot call the method.
 //
 //     struct my_lib {};                                       // NAMESPACE my_lib
-//     struct FB_Axis : function_block<FB_Axis>, member_of<my_lib> {
+//     struct FB_Axis : function_block<FB_Axis>, member_of<my_lib, FB_Axis> {
 //       void Calibrate(internal_access<my_lib>) { ... }       // METHOD INTERNAL Calibrate
 //     };
-//     struct FB_Machine : function_block<FB_Machine>, member_of<my_lib> {
+//     struct FB_Machine : function_block<FB_Machine>, member_of<my_lib, FB_Machine> {
 //       FB_Axis axis;
 //       void body() { axis.Calibrate(internal()); }           // inside the library: fine
 //     };
@@ -27,19 +27,21 @@
 
 namespace iecoop {
 
-template <class Library>
+template <class Library, class Self>
 struct member_of;
 
 /// The pass key of an INTERNAL member of `Library`: only the library's POUs can make it.
 template <class Library>
 class internal_access {
   constexpr internal_access() noexcept = default;
-  friend struct member_of<Library>;
+  template <class L, class S>
+  friend struct member_of;
 };
 
-/// Marks a POU as part of `Library` (an empty base: no size). Inside it, `internal()` makes
-/// the key its library's INTERNAL methods, properties and actions need.
-template <class Library>
+/// Marks the POU `Self` as part of `Library`. An empty base that costs nothing (Self makes
+/// it a distinct type in every POU, so nested library POUs still share no empty base).
+/// Inside the POU, `internal()` makes the key its library's INTERNAL members need.
+template <class Library, class Self>
 struct member_of {
  protected:
   static constexpr internal_access<Library> internal() noexcept { return {}; }

@@ -42,19 +42,19 @@ namespace iecoop {
 /// keeps them private grants access with `friend struct iecoop::block_access;`.
 struct block_access {
   template <class B>
-  static void body(B& block) {
-    block.body();
+  static auto body(B& block) -> decltype(block.body()) {
+    return block.body();
   }
   template <class B, class... P>
-  static auto fb_init(B& block, P&&... params) {
+  static auto fb_init(B& block, P&&... params) -> decltype(block.FB_Init(std::forward<P>(params)...)) {
     return block.FB_Init(std::forward<P>(params)...);
   }
   template <class B>
-  static auto fb_exit(B& block, BOOL in_copy_code) {
+  static auto fb_exit(B& block, BOOL in_copy_code) -> decltype(block.FB_Exit(in_copy_code)) {
     return block.FB_Exit(in_copy_code);
   }
   template <class B>
-  static auto fb_reinit(B& block) {
+  static auto fb_reinit(B& block) -> decltype(block.FB_Reinit()) {
     return block.FB_Reinit();
   }
 };

@@ -195,6 +195,8 @@ class function {
   constexpr decltype(auto) operator()(A&&... arguments) const {
     return impl_(vars_args(std::forward<A>(arguments)...));
   }
+  /// The same call with the arguments in braces, as methods take them.
+  constexpr decltype(auto) operator()(vars_args arguments) const { return impl_(std::move(arguments)); }
 
  private:
   Impl impl_;

@@ -226,16 +226,24 @@ class integer {
   friend constexpr std::strong_ordering operator<=>(integer a, integer b) noexcept { return a.value_ <=> b.value_; }
 
   // Comparison with any C++ integer compares the mathematical values (no conversion, so
-  // INT(-1) < 4000000000u is true).
+  // INT(-1) < 4000000000u is true). Where both fit a common type without changing a value,
+  // that is a single machine comparison.
   template <detail::cpp_integer T>
   friend constexpr bool operator==(integer a, T b) noexcept {
     return std::cmp_equal(a.value_, b);
   }
   template <detail::cpp_integer T>
   friend constexpr std::strong_ordering operator<=>(integer a, T b) noexcept {
-    if (std::cmp_less(a.value_, b)) return std::strong_ordering::less;
-    if (std::cmp_greater(a.value_, b)) return std::strong_ordering::greater;
-    return std::strong_ordering::equal;
+    if constexpr (std::is_signed_v<Rep> == std::is_signed_v<T>) {
+      using common = std::common_type_t<Rep, T>;
+      return static_cast<common>(a.value_) <=> static_cast<common>(b);
+    } else if constexpr (sizeof(Rep) < sizeof(long long) && sizeof(T) < sizeof(long long)) {
+      return static_cast<long long>(a.value_) <=> static_cast<long long>(b);
+    } else {
+      if (std::cmp_less(a.value_, b)) return std::strong_ordering::less;
+      if (std::cmp_greater(a.value_, b)) return std::strong_ordering::greater;
+      return std::strong_ordering::equal;
+    }
   }
 
  private:

@@ -172,6 +172,17 @@ class output : public detail::compares_as_value<output<T>, T> {
     value_ = other.value_;
     return *this;
   }
+  /// Moving hands the binding over: the moved-to output delivers the value.
+  constexpr output(output&& other) noexcept
+      : detail::compares_as_value<output<T>, T>(), value_(std::move(other.value_)), target_(other.target_) {
+    other.target_ = nullptr;
+  }
+  constexpr output& operator=(output&& other) noexcept {
+    value_ = std::move(other.value_);
+    target_ = other.target_;
+    other.target_ = nullptr;
+    return *this;
+  }
   constexpr ~output() {
     if (target_ != nullptr) *target_ = value_;
   }

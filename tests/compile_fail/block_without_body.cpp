@@ -1,0 +1,11 @@
+// EXPECT: a function block needs its code as
+// A block's code is its body() (ST: the implementation part).
+#include <iecoop/iecoop.hpp>
+using namespace iecoop;
+struct FB : function_block<FB> {
+  INT iValue;
+#ifndef IECOOP_COMPILE_FAIL
+  void body() { iValue = iValue + 1; }
+#endif
+};
+int main() { FB fb; fb(); }

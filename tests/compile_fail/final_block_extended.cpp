@@ -1,0 +1,16 @@
+// EXPECT: final
+// A FINAL block cannot be extended.
+#include <iecoop/iecoop.hpp>
+using namespace iecoop;
+struct FB_Base : function_block<FB_Base> {
+  virtual ~FB_Base() = default;
+  virtual void body() {}
+};
+#ifdef IECOOP_COMPILE_FAIL
+struct FB_Final final : extends<FB_Final, FB_Base> {};
+struct FB_More : extends<FB_More, FB_Final> {};
+#else
+struct FB_Final : extends<FB_Final, FB_Base> {};
+struct FB_More : extends<FB_More, FB_Final> {};
+#endif
+int main() { FB_More fb; fb(); }
