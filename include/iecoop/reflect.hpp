@@ -76,6 +76,7 @@ struct reflected_object {
 #if defined(__clang__)
 #  pragma clang diagnostic push
 #  pragma clang diagnostic ignored "-Wundefined-var-template"
+#  pragma clang diagnostic ignored "-Wundefined-internal"
 #endif
 template <class T>
 extern const reflected_object<T> declared_only;
