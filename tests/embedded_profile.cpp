@@ -6,6 +6,32 @@
 namespace {
 int faults = 0;
 void count_fault(const iecoop::fault_info&) { ++faults; }
+
+using namespace iecoop;
+
+struct FB_Ramp : function_block<FB_Ramp> {
+  explicit FB_Ramp(INT limit) { run_fb_init(*this, limit); }
+  INT iTarget;
+  INT iValue;
+  INT iLimit;
+  using VAR_INPUT = pins<&FB_Ramp::iTarget>;
+  using VAR_OUTPUT = pins<&FB_Ramp::iValue>;
+  BOOL FB_Init(BOOL, BOOL, INT limit) {
+    iLimit = limit;
+    return TRUE;
+  }
+  void body() {
+    if (iValue < iTarget) iValue = iValue + 1;
+  }
+  struct Clamp_vars {
+    INT iIn;
+    output<BOOL> bClamped;
+  };
+  INT Clamp(args<Clamp_vars> in) {
+    in.bClamped = in.iIn > iLimit;
+    return in.bClamped == TRUE ? iLimit : in.iIn;
+  }
+};
 }  // namespace
 
 int main() {
@@ -34,6 +60,17 @@ int main() {
   expect(FIND(name, "belt") == 0 && FIND(name, "bel") == 10);
   expect(REAL_TO_INT(REAL(2.5f)) == 3 && INT_TO_SINT(4223) == 127);
   expect(WSTRING_TO_STRING(STRING_TO_WSTRING(name)) == name);
+
+  FB_Ramp ramp{INT(10)};
+  INT value;
+  ramp("iTarget"_ = INT(3), "iValue"_ >> value);
+  ramp();
+  expect(value == 1 && ramp.iValue == 2);
+  BOOL clamped;
+  const INT clamp = ramp.Clamp({"iIn"_ = INT(50), "bClamped"_ >> clamped});
+  expect(clamp == 10 && clamped == TRUE);
+  reset(ramp, reset_kind::cold, INT(20));
+  expect(ramp.iValue == 0 && ramp.iLimit == 20);
 
   return failures;
 }

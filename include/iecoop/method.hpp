@@ -20,8 +20,10 @@
 //     fb.DoIt({"iInput_1"_ = 16});        // the others take their declared initial values
 //
 // Every call starts from the declared initial values (method variables are temporary), an
-// output named with `"x"_ >> y` is copied to y when the call returns, and an in-out binds to
-// the variable passed. A one-argument call needs no braces: fb.M_Add(3).
+// output named with `"x"_ >> y` is copied to y when the call's variables end — for a method,
+// when the statement containing the call ends (so read y in the next statement); a FUNCTION
+// delivers before it returns — and an in-out binds to the variable passed. A one-argument call
+// needs no braces: fb.M_Add(3).
 #pragma once
 
 #include <cstddef>

@@ -98,6 +98,16 @@ TEST_SUITE("methods and functions") {
     CHECK(tools.FreshOutputs({}) == TRUE);
   }
 
+  TEST_CASE("when outputs arrive: a FUNCTION's before it returns, a method's at the end of the statement") {
+    BOOL limited = FALSE;
+    CHECK((F_Limit("iIn"_ = 150, "bLimited"_ >> limited) == 100 && limited == TRUE));
+    FB_Tools tools;
+    BOOL clamped = FALSE;
+    const INT scaled = tools.Scale({"iIn"_ = 60, "bClamped"_ >> clamped});
+    CHECK(scaled == 120);
+    CHECK(clamped == TRUE);  // the statement above has ended
+  }
+
   TEST_CASE("in-outs bind to the caller's variables, by name or by position") {
     FB_Tools tools;
     INT x = 1;
