@@ -40,10 +40,12 @@ class internal_access {
 
 /// Marks the POU `Self` as part of `Library`. An empty base that costs nothing (Self makes
 /// it a distinct type in every POU, so nested library POUs still share no empty base).
-/// Inside the POU, `internal()` makes the key its library's INTERNAL members need.
+/// Inside Self — not in blocks derived from it outside the library — `internal()` makes the
+/// key the library's INTERNAL members need.
 template <class Library, class Self>
 struct member_of {
- protected:
+ private:
+  friend Self;
   static constexpr internal_access<Library> internal() noexcept { return {}; }
 };
 

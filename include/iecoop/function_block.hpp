@@ -104,10 +104,7 @@ constexpr void apply_output(const B& block, const A& argument) {
   using arg = std::remove_cvref_t<A>;
   constexpr std::size_t output = outputs_of<B>::index_of(arg::name);
   if constexpr (output < outputs_of<B>::size) {
-    const auto& value = block.*pin<outputs_of<B>, output>;
-    static_assert(std::is_assignable_v<typename arg::target_type&, decltype(value)>,
-                  "iecoop: the output does not convert to the variable after =>; give the variable the output's type");
-    *argument.target = value;
+    deliver_output(*argument.target, block.*pin<outputs_of<B>, output>);
   } else {
     static_assert(dependent_false<A>,
                   "iecoop: the block has no VAR_OUTPUT of this name (see \"name\"_ in the instantiation); only "
@@ -122,6 +119,7 @@ void call_block(B& block, A&&... arguments) {
                 "iecoop: a function block needs its code as `void body()` (public, or private with "
                 "`friend struct iecoop::block_access;`)");
   check_interface<B>();
+  static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice");
   (
       [&] {
         if constexpr (NamedInput<A>) apply_input(block, std::forward<A>(arguments));
@@ -142,9 +140,16 @@ void call_block(B& block, A&&... arguments) {
 
 template <class B, class... A>
 constexpr B& assign_inputs(B& block, A&&... arguments) {
+  static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice");
   (apply_input(block, std::forward<A>(arguments)), ...);
   return block;
 }
+
+/// Compiles only if Base's body() is virtual ("marked override, but does not override" if not).
+template <class Base>
+struct virtual_body_probe : Base {
+  void body() override {}
+};
 
 }  // namespace detail
 
@@ -181,12 +186,6 @@ class function_block {
     return detail::assign_inputs(self(), std::forward<A>(arguments)...);
   }
 
- protected:
-  constexpr function_block() noexcept = default;
-  constexpr function_block(const function_block&) noexcept = default;
-  constexpr function_block& operator=(const function_block&) noexcept = default;
-  ~function_block() = default;
-
  private:
   Self& self() noexcept { return static_cast<Self&>(*this); }
 };
@@ -207,6 +206,9 @@ class extends : public Base {
                 "iecoop: a block that is extended must dispatch its body virtually, as CODESYS does: declare "
                 "`virtual void body()` in the base block (and override it in the derived one)");
   static_assert(!std::is_final_v<Base>, "iecoop: a FINAL block cannot be extended");
+  // A base with virtual functions but a non-virtual body would still run its own body when
+  // called through a base reference; this fails to compile in that case.
+  static_assert(std::is_polymorphic_v<detail::virtual_body_probe<Base>>);
 
  public:
   /// ST's SUPER^: the base block (`SUPER::M()`, `SUPER::body()`).

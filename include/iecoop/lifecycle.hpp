@@ -27,6 +27,7 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/function_block.hpp>
 #include <iecoop/named.hpp>
 #include <iecoop/types.hpp>
@@ -36,26 +37,6 @@
 namespace iecoop {
 
 namespace detail {
-
-/// What the lifecycle operation under way passes to FB_Init and FB_Exit.
-struct lifecycle_flags {
-  bool init_retains = true;     ///< bInitRetains of FB_Init
-  bool in_copy_code = false;    ///< bInCopyCode of FB_Init and FB_Exit
-  bool exit_suppressed = false; ///< destruction of a scratch copy: no FB_Exit
-};
-inline lifecycle_flags current_lifecycle{};
-
-/// Sets the flags for the duration of a scope.
-class lifecycle_scope {
- public:
-  explicit lifecycle_scope(lifecycle_flags flags) noexcept : saved_(current_lifecycle) { current_lifecycle = flags; }
-  ~lifecycle_scope() { current_lifecycle = saved_; }
-  lifecycle_scope(const lifecycle_scope&) = delete;
-  lifecycle_scope& operator=(const lifecycle_scope&) = delete;
-
- private:
-  lifecycle_flags saved_;
-};
 
 template <class B>
 concept has_fb_exit = requires(B& b) { block_access::fb_exit(b, BOOL{}); };
@@ -72,18 +53,18 @@ concept has_fb_reinit = requires(B& b) { block_access::fb_reinit(b); };
  */
 template <class B, class... P>
 void run_fb_init(B& block, P&&... params_then_initial_values) {
+  static_assert(detail::positional_first<P...>(),
+                "iecoop: run_fb_init takes FB_Init's parameters first, then the named initial values");
   constexpr std::size_t named = (0 + ... + (NamedInput<P> ? 1 : 0));
   constexpr std::size_t params = sizeof...(P) - named;
-  [&]<std::size_t... I>(std::index_sequence<I...>, auto&&... all) {
-    auto arguments = std::forward_as_tuple(std::forward<decltype(all)>(all)...);
-    static_assert(requires { block_access::fb_init(block, BOOL{}, BOOL{}, std::get<I>(arguments)...); },
+  auto arguments = std::forward_as_tuple(std::forward<P>(params_then_initial_values)...);
+  [&]<std::size_t... I, std::size_t... J>(std::index_sequence<I...>, std::index_sequence<J...>) {
+    static_assert(requires { block_access::fb_init(block, BOOL{}, BOOL{}, std::get<I>(std::move(arguments))...); },
                   "iecoop: the block has no FB_Init(BOOL bInitRetains, BOOL bInCopyCode, <these parameters>)");
     block_access::fb_init(block, BOOL(detail::current_lifecycle.init_retains), BOOL(detail::current_lifecycle.in_copy_code),
-                          std::get<I>(arguments)...);
-    [&]<std::size_t... J>(std::index_sequence<J...>) {
-      block.with(std::get<params + J>(arguments)...);
-    }(std::make_index_sequence<named>{});
-  }(std::make_index_sequence<params>{}, std::forward<P>(params_then_initial_values)...);
+                          std::get<I>(std::move(arguments))...);
+    block.with(std::get<params + J>(std::move(arguments))...);
+  }(std::make_index_sequence<params>{}, std::make_index_sequence<named>{});
 }
 
 /// Calls the block's FB_Exit(bInCopyCode) with the flag of the operation under way. Call it
@@ -102,8 +83,8 @@ void run_fb_exit(B& block) {
  * bInCopyCode = FALSE. An instance declared as an ordinary C++ variable gets exactly this.
  */
 template <class T, class... A>
-T& first_start(void* storage, A&&... args) {
-  detail::lifecycle_scope initialising({true, false, false});
+T& first_start(void* storage, A&&... args) noexcept {
+  detail::lifecycle_scope initialising({true, false, false, false});
   return *std::construct_at(static_cast<T*>(storage), std::forward<A>(args)...);
 }
 
@@ -119,14 +100,18 @@ enum class reset_kind : std::uint8_t {
  * base), then constructs it afresh with `args` (the declaration's FB_Init parameters), which
  * runs FB_Init with bInitRetains = (kind != warm), bInCopyCode = FALSE. A new download is
  * reset(x, reset_kind::origin, ...).
+ *
+ * Pass the instance as its own type, not through a reference to a base block (the instance is
+ * rebuilt as the type named here), and parameters that do not refer into the instance. An
+ * exception from FB_Init or FB_Exit ends the program (the operation is noexcept).
  */
 template <class T, class... A>
-T& reset(T& instance, reset_kind kind, A&&... args) {
+T& reset(T& instance, reset_kind kind, A&&... args) noexcept {
   {
-    detail::lifecycle_scope exiting({true, false, false});
+    detail::lifecycle_scope exiting({true, false, false, false});
     std::destroy_at(&instance);
   }
-  detail::lifecycle_scope initialising({kind != reset_kind::warm, false, false});
+  detail::lifecycle_scope initialising({kind != reset_kind::warm, false, false, false});
   return *std::construct_at(&instance, std::forward<A>(args)...);
 }
 
@@ -135,27 +120,31 @@ T& reset(T& instance, reset_kind kind, A&&... args) {
  * old.FB_Exit(bInCopyCode := TRUE); new.FB_Init(bInitRetains := FALSE, bInCopyCode := TRUE);
  * copy of the old instance's data into the new one; new.FB_Reinit(). Returns the new
  * instance; the old one no longer exists. As in CODESYS, pointers into the old instance
- * dangle afterwards.
+ * dangle afterwards, except in-out bindings, which keep what the new instance's construction
+ * bound. The same preconditions as for reset() apply.
  */
 template <class T, class... A>
-T& online_change(T& old_instance, void* storage, A&&... args) {
+T& online_change(T& old_instance, void* storage, A&&... args) noexcept {
   static_assert(std::is_copy_assignable_v<T> && std::is_copy_constructible_v<T>,
                 "iecoop: an online change copies the instance; the block must be copyable");
   alignas(T) unsigned char saved_storage[sizeof(T)];
   T* saved = std::construct_at(reinterpret_cast<T*>(saved_storage), std::as_const(old_instance));
   {
-    detail::lifecycle_scope exiting({false, true, false});
+    detail::lifecycle_scope exiting({false, true, false, false});
     std::destroy_at(&old_instance);
   }
   T* fresh = nullptr;
   {
-    detail::lifecycle_scope initialising({false, true, false});
+    detail::lifecycle_scope initialising({false, true, false, false});
     fresh = std::construct_at(static_cast<T*>(storage), std::forward<A>(args)...);
   }
-  *fresh = *saved;
+  {
+    detail::lifecycle_scope copying({false, true, false, true});
+    *fresh = *saved;
+  }
   if constexpr (detail::has_fb_reinit<T>) block_access::fb_reinit(*fresh);
   {
-    detail::lifecycle_scope discarding({false, false, true});
+    detail::lifecycle_scope discarding({false, false, true, false});
     std::destroy_at(saved);
   }
   return *fresh;

@@ -59,16 +59,6 @@ constexpr std::size_t find_first_output() noexcept {
   }(std::make_index_sequence<field_count<Vars>>{});
 }
 
-// Positional arguments come first, named ones after them (as IEC never mixes the two in a
-// way that puts a positional argument after a named one).
-template <class... A>
-constexpr bool positional_first() noexcept {
-  bool named_seen = false;
-  bool ok = true;
-  ((named_seen && !NamedArgument<A> ? ok = false : false, named_seen = named_seen || NamedArgument<A>), ...);
-  return ok;
-}
-
 }  // namespace detail
 
 /// The position of the first VAR_OUTPUT in Vars (field_count<Vars> if there is none).
@@ -103,6 +93,7 @@ class args : public Vars {
   constexpr args(A&&... arguments) : Vars() {  // NOLINT: a call's argument list
     static_assert(detail::positional_first<A...>(),
                   "iecoop: positional arguments come before named ones; name all arguments after the first named one");
+    static_assert(detail::distinct_names<A...>(), "iecoop: a call names the same variable twice");
     [&]<std::size_t... K>(std::index_sequence<K...>) {
       (apply<K>(std::forward<A>(arguments)), ...);
     }(std::index_sequence_for<A...>{});
@@ -131,9 +122,7 @@ class args : public Vars {
                     "iecoop: the method or function has no variable of this name (see \"name\"_ in the instantiation)");
       using field = field_type<Vars, index>;
       if constexpr (detail::is_output<field>::value) {
-        static_assert(std::is_same_v<typename field::value_type, typename arg::target_type>,
-                      "iecoop: the variable after => must have the output's type");
-        get_field<index>(static_cast<Vars&>(*this)).bind_result(argument.target);
+        get_field<index>(static_cast<Vars&>(*this)).bind_result(*argument.target);
       } else {
         static_assert(detail::dependent_false<A>, "iecoop: only a VAR_OUTPUT (declared as output<T>) can be read with =>");
       }
@@ -162,7 +151,9 @@ class args : public Vars {
 
 namespace detail {
 template <class F>
-struct call_signature;
+struct call_signature {
+  using parameter = void;  // a generic or mutable lambda: rejected by function<>'s static_assert
+};
 template <class C, class R, class P>
 struct call_signature<R (C::*)(P) const> {
   using parameter = std::remove_cvref_t<P>;
@@ -188,7 +179,8 @@ template <class Impl>
 class function {
   using vars_args = typename detail::call_signature<decltype(&Impl::operator())>::parameter;
   static_assert(detail::is_args<vars_args>::value,
-                "iecoop: a FUNCTION's lambda takes its variables as one parameter of type args<Vars>");
+                "iecoop: a FUNCTION is made from a non-generic, non-mutable lambda taking its variables as one "
+                "parameter of type args<Vars>: [](args<F_vars> in) -> R { ... }");
 
  public:
   constexpr function(Impl impl) noexcept : impl_(impl) {}  // NOLINT: `function F = [](args<V>) {...};`

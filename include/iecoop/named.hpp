@@ -73,6 +73,39 @@ template <fixed_string N, class T>
 struct is_named_output<named_output<N, T>> : std::true_type {};
 }  // namespace detail
 
+namespace detail {
+template <class A>
+constexpr std::string_view name_of_argument() noexcept {
+  if constexpr (is_named_input<std::remove_cvref_t<A>>::value || is_named_output<std::remove_cvref_t<A>>::value) {
+    return std::remove_cvref_t<A>::name;
+  } else {
+    return {};
+  }
+}
+// Positional arguments come first, named ones after them.
+template <class... A>
+constexpr bool positional_first() noexcept {
+  constexpr bool named[] = {false, (is_named_input<std::remove_cvref_t<A>>::value ||
+                                    is_named_output<std::remove_cvref_t<A>>::value)...};
+  for (std::size_t i = 2; i < sizeof...(A) + 1; ++i) {
+    if (named[i - 1] && !named[i]) return false;
+  }
+  return true;
+}
+
+/// No two named arguments of a call name the same parameter (ST rejects that too).
+template <class... A>
+constexpr bool distinct_names() noexcept {
+  constexpr std::string_view names[] = {std::string_view{}, name_of_argument<A>()...};
+  for (std::size_t i = 1; i < sizeof...(A) + 1; ++i) {
+    for (std::size_t j = i + 1; j < sizeof...(A) + 1; ++j) {
+      if (!names[i].empty() && names[i] == names[j]) return false;
+    }
+  }
+  return true;
+}
+}  // namespace detail
+
 /// `"x"_ = value`
 template <class T>
 concept NamedInput = detail::is_named_input<std::remove_cvref_t<T>>::value;

@@ -31,20 +31,19 @@ template <class Self>
 class program : public function_block<Self> {
  public:
   /// The live instance. Without one, reports fault_kind::invalid_value and returns a scratch
-  /// instance, which from then on is the live one.
+  /// instance (which never becomes the live one).
   static Self& instance() {
     if (live_ == nullptr) {
       fault(fault_kind::invalid_value, "PROGRAM used before its instance was declared; a scratch instance stands in");
-      static Self scratch;  // registers itself
-      return scratch;
+      return scratch();
     }
     return *live_;
   }
   /// TRUE while an instance lives.
   static bool exists() noexcept { return live_ != nullptr; }
 
- protected:
   program() {
+    if (making_scratch_) return;
     if (live_ != nullptr) {
       fault(fault_kind::duplicate_program, "a PROGRAM has exactly one instance; this one is not registered");
       return;
@@ -58,7 +57,14 @@ class program : public function_block<Self> {
   }
 
  private:
+  static Self& scratch() {
+    making_scratch_ = true;
+    static Self instance;
+    making_scratch_ = false;
+    return instance;
+  }
   static inline Self* live_ = nullptr;
+  static inline bool making_scratch_ = false;
 };
 
 }  // namespace iecoop

@@ -8,21 +8,28 @@
 // VAR_INPUT and the VAR_OUTPUT of blocks and programs are plain members.
 #pragma once
 
+#include <cstdlib>
 #include <type_traits>
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/fault.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
 namespace iecoop {
 
+template <class T, class Owner>
+class local;
+template <class T>
+class in_out;
+
 namespace detail {
 
 /// Comparisons of a wrapper (local, in_out, output) that see through to its value, also where
 /// the value's own operators are templates that would not look through the wrapper's
-/// implicit conversion (STRING's `== 'text'`).
+/// implicit conversion (STRING's `== 'text'`). Only where T itself compares.
 template <class Wrapper, class T>
 struct compares_as_value {
   template <class U>
@@ -35,22 +42,62 @@ struct compares_as_value {
   friend constexpr auto operator<=>(const Wrapper& a, const U& b) -> decltype(std::declval<const T&>() <=> b) {
     return a.get() <=> b;
   }
-  friend constexpr auto operator==(const Wrapper& a, const Wrapper& b)
-      -> decltype(std::declval<const T&>() == std::declval<const T&>()) {
+  friend constexpr bool operator==(const Wrapper& a, const Wrapper& b)
+    requires requires(const T& x) { x == x; }
+  {
     return a.get() == b.get();
   }
 };
 
+/// iecoop's own write access to a block's local: the target of `"Q"_ >> local` in a call.
+struct local_access {
+  template <class T, class Owner>
+  static constexpr T& ref(local<T, Owner>& variable) noexcept {
+    return variable.value_;
+  }
+};
+
+template <class T>
+struct is_local : std::false_type {};
+template <class T, class O>
+struct is_local<local<T, O>> : std::true_type {};
+template <class T>
+struct is_in_out : std::false_type {};
+template <class T>
+struct is_in_out<in_out<T>> : std::true_type {};
+
+/// The variable `=>` writes into: a local's or in-out's value, or the variable itself.
+template <class Target>
+constexpr auto& output_target(Target& target) {
+  if constexpr (is_local<Target>::value) {
+    return local_access::ref(target);
+  } else if constexpr (is_in_out<Target>::value) {
+    return target.get();
+  } else {
+    return target;
+  }
+}
+
+/// Copies an output to the variable after `=>`, with IEC's implicit conversions.
+template <class Target, class V>
+constexpr void deliver_output(Target& target, const V& value) {
+  auto& variable = output_target(target);
+  static_assert(std::is_assignable_v<decltype(variable), const V&>,
+                "iecoop: the output does not convert to the variable after =>; give the variable the output's type");
+  variable = value;
+}
+
 }  // namespace detail
 
 /**
- * A block's local variable (VAR ... END_VAR): `var<INT> count{0};` inside the block.
+ * A block's local variable (VAR ... END_VAR): `var<INT> count{5};` inside the block.
  *
  * Everyone can read it (`fb.count`, `fb.count + 1`), as CODESYS lets outside code read a
  * block's locals; only the declaring block `Owner` can assign it (`count = count + 1;`
- * inside Owner's body and methods), as CODESYS forbids writing them from outside. A block
- * derived from Owner reads it too; if it must also write it, declare the variable in a C++
- * `protected:` section instead (IEC 3rd edition's VAR PROTECTED).
+ * inside Owner's body and methods), as CODESYS forbids writing them from outside — and a
+ * call's `"Q"_ >> count` delivers into it. A block derived from Owner reads it too; if it
+ * must also write it, declare the variable in a C++ `protected:` section instead (IEC 3rd
+ * edition's VAR PROTECTED).
  */
 template <class T, class Owner>
 class local : public detail::compares_as_value<local<T, Owner>, T> {
@@ -60,6 +107,7 @@ class local : public detail::compares_as_value<local<T, Owner>, T> {
   constexpr local() = default;
   /// The declaration's initial value: `var<INT> count{5};`
   constexpr explicit local(const T& initial) : value_(initial) {}
+  constexpr local(const local&) = default;
 
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
@@ -67,7 +115,9 @@ class local : public detail::compares_as_value<local<T, Owner>, T> {
 
  private:
   friend Owner;
+  friend struct detail::local_access;
 
+  constexpr local& operator=(const local&) = default;  // Owner's own copies (online change)
   constexpr local& operator=(const T& value) {
     value_ = value;
     return *this;
@@ -97,7 +147,7 @@ class local : public detail::compares_as_value<local<T, Owner>, T> {
     --value_;
     return *this;
   }
-  /// Write access for the owner, for members of structured locals: `count.ref().x = 1;`
+  /// Write access for the owner, for members of structured locals: `pos.ref().x = 1;`
   constexpr T& ref() noexcept { return value_; }
 
   T value_{};
@@ -109,8 +159,9 @@ class local : public detail::compares_as_value<local<T, Owner>, T> {
  *
  * Reading or writing it while unbound reports fault_kind::unbound_in_out (and then works on
  * a scratch variable, so nothing undefined happens); calling a block whose VAR_IN_OUT is
- * unbound reports the same fault and skips the body. `in_out<const T>` is VAR_IN_OUT
- * CONSTANT.
+ * unbound reports the same fault and skips the body. Assigning one in-out to another copies
+ * the value, as ST's `a := b` does; each keeps its binding (also when an online change copies
+ * the block). `in_out<const T>` is VAR_IN_OUT CONSTANT.
  */
 template <class T>
 class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T>> {
@@ -119,6 +170,7 @@ class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T
 
   constexpr in_out() noexcept = default;
   constexpr explicit in_out(T& variable) noexcept : target_(&variable) {}
+  constexpr in_out(const in_out&) noexcept = default;
 
   /// Binds to `variable` (ST: `x := variable` in the call; REF= for references).
   constexpr void bind(T& variable) noexcept { target_ = &variable; }
@@ -140,15 +192,27 @@ class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T
     get() = value;
     return *this;
   }
-  constexpr in_out& operator=(const in_out&) = default;  // copies the binding (online change)
-  constexpr in_out(const in_out&) = default;
+  /// ST's `a := b`: copies b's value into a's variable. While an online change copies the
+  /// block that holds it, nothing happens: the new instance keeps its own binding.
+  constexpr in_out& operator=(const in_out& other) {
+    if constexpr (!std::is_const_v<T>) {
+      if (!detail::current_lifecycle.relocating) get() = other.get();
+    }
+    return *this;
+  }
 
  private:
   static T& unbound() {
     fault(fault_kind::unbound_in_out, "VAR_IN_OUT used before it was bound to a variable");
-    static value_type scratch{};
-    scratch = value_type{};
-    return scratch;
+    if constexpr (std::is_default_constructible_v<value_type> && std::is_copy_assignable_v<value_type>) {
+      static value_type scratch = value_type();
+      scratch = value_type();
+      return scratch;
+    } else {
+      // No stand-in can be made for this type (an abstract block, a block with FB_Init
+      // parameters): the program cannot go on.
+      std::abort();
+    }
   }
 
   T* target_ = nullptr;
@@ -157,7 +221,10 @@ class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T
 /**
  * A VAR_OUTPUT of a METHOD or FUNCTION. It starts each call at its declared initial value,
  * the body assigns it like any variable, and a call that names it (`"x"_ >> y`, ST's
- * `x => y`) receives its value in `y` when the call returns.
+ * `x => y`) receives its value in `y` when the call's variables end.
+ *
+ * A copy or move of a bound output delivers into the output it was made from, so a method
+ * that hands its variables on (`SUPER::M(in)`) still delivers to its own caller.
  */
 template <class T>
 class output : public detail::compares_as_value<output<T>, T> {
@@ -167,24 +234,17 @@ class output : public detail::compares_as_value<output<T>, T> {
   constexpr output() = default;
   /// The declared initial value: `output<INT> x{5};` (ST: `x : INT := 5;`).
   constexpr explicit output(const T& initial) : value_(initial) {}
-  output(const output& other) : detail::compares_as_value<output<T>, T>(), value_(other.value_) {}  // a copy is not bound
-  output& operator=(const output& other) {
+  constexpr output(const output& other) : detail::compares_as_value<output<T>, T>(), value_(other.value_) {
+    if (other.target_ != nullptr) bind_result(const_cast<output&>(other).value_);
+  }
+  constexpr output(output&& other) noexcept : output(static_cast<const output&>(other)) {}
+  constexpr output& operator=(const output& other) {
     value_ = other.value_;
     return *this;
   }
-  /// Moving hands the binding over: the moved-to output delivers the value.
-  constexpr output(output&& other) noexcept
-      : detail::compares_as_value<output<T>, T>(), value_(std::move(other.value_)), target_(other.target_) {
-    other.target_ = nullptr;
-  }
-  constexpr output& operator=(output&& other) noexcept {
-    value_ = std::move(other.value_);
-    target_ = other.target_;
-    other.target_ = nullptr;
-    return *this;
-  }
+  constexpr output& operator=(output&& other) noexcept { return *this = static_cast<const output&>(other); }
   constexpr ~output() {
-    if (target_ != nullptr) *target_ = value_;
+    if (target_ != nullptr) deliver_(target_, value_);
   }
 
   constexpr output& operator=(const T& value) {
@@ -195,19 +255,21 @@ class output : public detail::compares_as_value<output<T>, T> {
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   constexpr T& ref() noexcept { return value_; }
 
-  /// Makes the call copy this output to `*target` when it ends (ST's `=>`).
-  constexpr void bind_result(T* target) noexcept { target_ = target; }
+  /// Makes the call copy this output to `target` when it ends (ST's `=>`), converting as
+  /// IEC allows; the target may be a variable, a block's var<> or an in-out.
+  template <class Target>
+  constexpr void bind_result(Target& target) noexcept {
+    target_ = &target;
+    deliver_ = [](void* t, const T& v) { detail::deliver_output(*static_cast<Target*>(t), v); };
+  }
 
  private:
   T value_{};
-  T* target_ = nullptr;
+  void* target_ = nullptr;
+  void (*deliver_)(void*, const T&) = nullptr;
 };
 
 namespace detail {
-template <class T>
-struct is_in_out : std::false_type {};
-template <class T>
-struct is_in_out<in_out<T>> : std::true_type {};
 template <class T>
 struct is_output : std::false_type {};
 template <class T>

@@ -7,10 +7,13 @@
 
 namespace iecoop::detail {
 
-/// Converts to (an lvalue of) any type. Never defined: used only in unevaluated probes.
+/// Converts to (an lvalue of) any type. Used only in unevaluated probes; the body exists
+/// only so that compilers do not warn about an undefined function, and is never run.
 struct any_field {
   template <class T>
-  constexpr operator T&() const noexcept;  // NOLINT: implicit on purpose
+  operator T&() const noexcept {  // NOLINT: implicit on purpose
+    __builtin_trap();
+  }
 };
 
 }  // namespace iecoop::detail

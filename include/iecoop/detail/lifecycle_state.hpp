@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// iecoop/detail/lifecycle_state.hpp — what the lifecycle operation under way passes to
+// FB_Init and FB_Exit, and whether instances are being relocated (an online change).
+// IWYU pragma: private, include <iecoop/lifecycle.hpp>
+#pragma once
+
+namespace iecoop::detail {
+
+struct lifecycle_flags {
+  bool init_retains = true;      ///< bInitRetains of FB_Init
+  bool in_copy_code = false;     ///< bInCopyCode of FB_Init and FB_Exit
+  bool exit_suppressed = false;  ///< destruction of a scratch copy: no FB_Exit
+  bool relocating = false;       ///< copying an instance during an online change
+};
+
+/// The flags of the operation under way. Lifecycle operations are not thread-safe: run them
+/// while no task runs.
+inline lifecycle_flags current_lifecycle{};
+
+/// Sets the flags for the duration of a scope.
+class lifecycle_scope {
+ public:
+  explicit lifecycle_scope(lifecycle_flags flags) noexcept : saved_(current_lifecycle) { current_lifecycle = flags; }
+  ~lifecycle_scope() { current_lifecycle = saved_; }
+  lifecycle_scope(const lifecycle_scope&) = delete;
+  lifecycle_scope& operator=(const lifecycle_scope&) = delete;
+
+ private:
+  lifecycle_flags saved_;
+};
+
+}  // namespace iecoop::detail
