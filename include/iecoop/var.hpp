@@ -14,6 +14,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -26,28 +27,6 @@ template <class T>
 class in_out;
 
 namespace detail {
-
-/// Comparisons of a wrapper (local, in_out, output) that see through to its value, also where
-/// the value's own operators are templates that would not look through the wrapper's
-/// implicit conversion (STRING's `== 'text'`). Only where T itself compares.
-template <class Wrapper, class T>
-struct compares_as_value {
-  template <class U>
-    requires(!std::is_same_v<U, Wrapper>)
-  friend constexpr auto operator==(const Wrapper& a, const U& b) -> decltype(std::declval<const T&>() == b) {
-    return a.get() == b;
-  }
-  template <class U>
-    requires(!std::is_same_v<U, Wrapper>)
-  friend constexpr auto operator<=>(const Wrapper& a, const U& b) -> decltype(std::declval<const T&>() <=> b) {
-    return a.get() <=> b;
-  }
-  friend constexpr bool operator==(const Wrapper& a, const Wrapper& b)
-    requires requires(const T& x) { x == x; }
-  {
-    return a.get() == b.get();
-  }
-};
 
 /// iecoop's own write access to a block's local: the target of `"Q"_ >> local` in a call.
 struct local_access {
@@ -100,9 +79,10 @@ constexpr void deliver_output(Target& target, const V& value) {
  * edition's VAR PROTECTED).
  */
 template <class T, class Owner>
-class local : public detail::compares_as_value<local<T, Owner>, T> {
+class local {
  public:
   using value_type = T;
+  using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
 
   constexpr local() = default;
   /// The declaration's initial value: `var<INT> count{5};`
@@ -112,6 +92,12 @@ class local : public detail::compares_as_value<local<T, Owner>, T> {
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   constexpr const T* operator->() const noexcept { return &value_; }
+  /// `IF bFlag THEN` (the value's own test, which the implicit conversion cannot reach).
+  explicit constexpr operator bool() const
+    requires std::is_constructible_v<bool, const T&>
+  {
+    return static_cast<bool>(value_);
+  }
 
  private:
   friend Owner;
@@ -164,9 +150,10 @@ class local : public detail::compares_as_value<local<T, Owner>, T> {
  * the block). `in_out<const T>` is VAR_IN_OUT CONSTANT.
  */
 template <class T>
-class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T>> {
+class in_out {
  public:
   using value_type = std::remove_const_t<T>;
+  using iecoop_value_wrapper = void;
 
   constexpr in_out() noexcept = default;
   constexpr explicit in_out(T& variable) noexcept : target_(&variable) {}
@@ -182,6 +169,11 @@ class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T
     return *target_;
   }
   constexpr operator T&() const { return get(); }  // NOLINT: reads as the variable
+  explicit constexpr operator bool() const
+    requires std::is_constructible_v<bool, const value_type&>
+  {
+    return static_cast<bool>(get());
+  }
   constexpr T* operator->() const { return &get(); }
 
   /// Writes through to the bound variable (a non-template operand, so that constants
@@ -227,14 +219,15 @@ class in_out : public detail::compares_as_value<in_out<T>, std::remove_const_t<T
  * that hands its variables on (`SUPER::M(in)`) still delivers to its own caller.
  */
 template <class T>
-class output : public detail::compares_as_value<output<T>, T> {
+class output {
  public:
   using value_type = T;
+  using iecoop_value_wrapper = void;
 
   constexpr output() = default;
   /// The declared initial value: `output<INT> x{5};` (ST: `x : INT := 5;`).
   constexpr explicit output(const T& initial) : value_(initial) {}
-  constexpr output(const output& other) : detail::compares_as_value<output<T>, T>(), value_(other.value_) {
+  constexpr output(const output& other) : value_(other.value_) {
     if (other.target_ != nullptr) bind_result(const_cast<output&>(other).value_);
   }
   constexpr output(output&& other) noexcept : output(static_cast<const output&>(other)) {}
@@ -254,6 +247,11 @@ class output : public detail::compares_as_value<output<T>, T> {
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   constexpr T& ref() noexcept { return value_; }
+  explicit constexpr operator bool() const
+    requires std::is_constructible_v<bool, const T&>
+  {
+    return static_cast<bool>(value_);
+  }
 
   /// Makes the call copy this output to `target` when it ends (ST's `=>`), converting as
   /// IEC allows; the target may be a variable, a block's var<> or an in-out.

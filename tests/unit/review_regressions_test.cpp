@@ -156,3 +156,46 @@ TEST_CASE("blocks and programs are value-initialised with {} too") {
   CHECK(c.q == 0);
   CHECK(p.n == 0);
 }
+
+namespace {
+// Wrapped REALs, BOOLs and STRINGs in expressions: the wrapper is its value, also where the
+// value needs a second conversion (REAL -> float) or has template operators (STRING).
+struct FB_Mixed : function_block<FB_Mixed> {
+  var<REAL> rGain{2.0f};
+  var<BOOL> bOn;
+  var<STRING<>> sName;
+  REAL rOut;
+  BOOL bOut;
+  void body() {
+    bOn = !bOn;
+    if (bOn) rOut = rGain * 1.5f + rGain;  // IF bOn THEN rOut := rGain * 1.5 + rGain;
+    bOut = bOn & TRUE;
+    sName = "mixed";
+  }
+};
+struct Scale_vars {
+  in_out<REAL> rValue;
+  output<REAL> rHalf;
+};
+inline constexpr function Scale = [](args<Scale_vars> in) -> BOOL {
+  in.rHalf = in.rValue / 2.0f;
+  in.rValue = in.rValue * 3.0f;
+  return BOOL(in.rHalf > 1.0f);
+};
+}  // namespace
+
+TEST_CASE("var<>, in_out<> and output<> of REAL and BOOL work in expressions and conditions") {
+  FB_Mixed fb;
+  fb();
+  CHECK(fb.rOut == doctest::Approx(5.0));
+  CHECK(fb.bOut == TRUE);
+  CHECK(-fb.rGain == doctest::Approx(-2.0));
+  CHECK(fb.rGain + fb.rGain == doctest::Approx(4.0));
+  CHECK(fb.sName == "mixed");
+  CHECK(!fb.bOn == FALSE);
+  REAL value = 4.0f;
+  REAL half;
+  CHECK(Scale("rValue"_ = value, "rHalf"_ >> half) == TRUE);
+  CHECK(half == doctest::Approx(2.0));
+  CHECK(value == doctest::Approx(12.0));
+}
