@@ -1,5 +1,6 @@
 // The core in use with -fno-exceptions -fno-rtti, as a firmware build compiles it: types,
-// literals, strings, string functions, conversions and the fault path. Returns 0 when
+// literals, strings, string functions, conversions, blocks, properties, interfaces with their
+// queries (no RTTI) and the fault path. Returns 0 when
 // every result is right.
 #include <iecoop/iecoop.hpp>
 
@@ -31,6 +32,27 @@ struct FB_Ramp : function_block<FB_Ramp> {
     in.bClamped = in.iIn > iLimit;
     return in.bClamped == TRUE ? iLimit : in.iIn;
   }
+};
+
+struct I_Drive : interface_base<I_Drive> {
+  virtual void Start() = 0;
+  virtual DINT Speed_Get() = 0;
+  [[no_unique_address]] property<DINT, &I_Drive::Speed_Get> Speed;
+};
+struct I_Brake : interface_base<I_Brake> {
+  virtual void Hold() = 0;
+};
+struct FB_Drive : function_block<FB_Drive, implements<I_Drive, I_Brake>> {
+  DINT dSpeed;
+  void body() {}
+  void Start() override { dSpeed = 1500; }
+  void Hold() override { dSpeed = 0; }
+  DINT Speed_Get() override { return dSpeed; }
+};
+struct FB_Idle : function_block<FB_Idle, implements<I_Drive>> {
+  void body() {}
+  void Start() override {}
+  DINT Speed_Get() override { return 0; }
 };
 }  // namespace
 
@@ -71,6 +93,18 @@ int main() {
   expect(clamp == 10 && clamped == TRUE);
   reset(ramp, reset_kind::cold, INT(20));
   expect(ramp.iValue == 0 && ramp.iLimit == 20);
+
+  FB_Drive drive;
+  FB_Idle idle;
+  itf<I_Drive> ip = drive;
+  ip->Start();
+  expect(ip->Speed == 1500);
+  itf<I_Brake> brake;
+  expect(query_interface(ip, brake) == TRUE);
+  brake->Hold();
+  expect(drive.dSpeed == 0 && query_pointer<FB_Drive>(ip) == &drive);
+  ip = idle;
+  expect(query_interface(ip, brake) == FALSE && brake == nullptr && query_pointer<FB_Drive>(ip) == nullptr);
 
   return failures;
 }

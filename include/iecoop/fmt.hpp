@@ -2,6 +2,7 @@
 // iecoop/fmt.hpp — fmt support: fmt::format("{}", x) prints IEC values as ST writes them:
 // TIME as T#1s500ms, LTIME as LTIME#1ms500us, BOOL as TRUE/FALSE, STRING and WSTRING as
 // their text (WSTRING in UTF-8). Integers and REALs accept fmt's number specs ("{:04x}").
+// A block's var<>, in_out<> and output<>, and a property, print as their values.
 //
 // Optional: include it where you format, and link fmt (fmt::fmt or fmt::fmt-header-only).
 // The rest of iecoop never needs fmt.
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <iecoop/detail/utf8.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
@@ -70,6 +72,16 @@ struct fmt::formatter<iecoop::iec_string<char16_t, N>> : fmt::formatter<std::str
     char* end = text;
     for (const char16_t c : value.view()) end = iecoop::detail::put_utf8(end, c);
     return fmt::formatter<std::string_view>::format(std::string_view(text, static_cast<std::size_t>(end - text)), ctx);
+  }
+};
+
+// var<>, in_out<>, output<> and property<> format as their values (a property calls Get).
+template <class W>
+  requires iecoop::detail::value_wrapper<W>
+struct fmt::formatter<W, char> : fmt::formatter<iecoop::detail::unwrapped_t<W>, char> {
+  template <class Context>
+  auto format(const W& wrapper, Context& ctx) const {
+    return fmt::formatter<iecoop::detail::unwrapped_t<W>, char>::format(wrapper.get(), ctx);
   }
 };
 

@@ -30,6 +30,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/interface.hpp>
 #include <iecoop/named.hpp>
 #include <iecoop/pins.hpp>
 #include <iecoop/var.hpp>
@@ -145,30 +146,12 @@ constexpr B& assign_inputs(B& block, A&&... arguments) {
   return block;
 }
 
-/// Compiles only if Base's body() is virtual ("marked override, but does not override" if not).
-template <class Base>
-struct virtual_body_probe : Base {
-  void body() override {}
-};
-
-}  // namespace detail
-
-/**
- * The base of a FUNCTION_BLOCK `Self` (CRTP): `struct FB : iecoop::function_block<FB>`.
- *
- * `Self` provides `void body()` (the block's code) and, to be callable with named
- * parameters, lists its interface as `using VAR_INPUT = iecoop::pins<...>` (likewise
- * VAR_OUTPUT and VAR_IN_OUT). Inside the block, `var<T>` declares a local (VAR).
- */
+/// The two ways to call a block `Self`, and with(): what function_block<> and extends<> add.
 template <class Self>
-class function_block {
+class block_calls {
  public:
-  /// VAR ... END_VAR inside Self: readable from outside, written only by Self.
-  template <class T>
-  using var = local<T, Self>;
-
   /// ST: `inst();` — runs the body with the inputs as they are.
-  void operator()() { detail::call_block(self()); }
+  void operator()() { call_block(self()); }
 
   /// ST: `inst(IN := x, PT := t, Q => q);` — assigns the named inputs (and binds the named
   /// in-outs), runs the body, then copies the named outputs out. Inputs not named keep
@@ -176,63 +159,37 @@ class function_block {
   template <NamedArgument... A>
     requires(sizeof...(A) > 0)
   void operator()(A&&... arguments) {
-    detail::call_block(self(), std::forward<A>(arguments)...);
+    call_block(self(), std::forward<A>(arguments)...);
   }
 
   /// Assigns named inputs without running the body, and returns the block, so that an
   /// action can follow: ST's `inst.Reset(In := FALSE);` is `inst.with("In"_ = FALSE).Reset();`.
   template <NamedInput... A>
   Self& with(A&&... arguments) {
-    return detail::assign_inputs(self(), std::forward<A>(arguments)...);
+    return assign_inputs(self(), std::forward<A>(arguments)...);
   }
 
  private:
   Self& self() noexcept { return static_cast<Self&>(*this); }
 };
 
+}  // namespace detail
+
 /**
- * `struct Derived : iecoop::extends<Derived, Base>` is ST's `FUNCTION_BLOCK Derived EXTENDS Base`.
+ * The base of a FUNCTION_BLOCK `Self` (CRTP): `struct FB : iecoop::function_block<FB>`, or
+ * `function_block<FB, implements<I_A, I_B>>` for `FUNCTION_BLOCK FB IMPLEMENTS I_A, I_B`.
  *
- * Derived is a Base wherever one is expected. Inside Derived, `SUPER::M()` is ST's
- * `SUPER^.M()` (the base implementation), `SUPER::body()` is `SUPER^()` (the base body), and
- * `this->M()` is `THIS^.M()` (the most derived override). Base must be polymorphic: CODESYS
- * dispatches the body and methods of a block hierarchy virtually, so declare
- * `virtual void body()` (and `virtual` methods) in the base and `override` them here.
- * `using extends::extends;` makes Derived take Base's constructor (FB_Init) parameters.
+ * `Self` provides `void body()` (the block's code) and, to be callable with named
+ * parameters, lists its interface as `using VAR_INPUT = iecoop::pins<...>` (likewise
+ * VAR_OUTPUT and VAR_IN_OUT). Inside the block, `var<T>` declares a local (VAR).
  */
-template <class Derived, class Base>
-class extends : public Base {
-  static_assert(std::is_polymorphic_v<Base>,
-                "iecoop: a block that is extended must dispatch its body virtually, as CODESYS does: declare "
-                "`virtual void body()` in the base block (and override it in the derived one)");
-  static_assert(!std::is_final_v<Base>, "iecoop: a FINAL block cannot be extended");
-  // A base with virtual functions but a non-virtual body would still run its own body when
-  // called through a base reference; this fails to compile in that case.
-  static_assert(std::is_polymorphic_v<detail::virtual_body_probe<Base>>);
-
+template <class Self, class Interfaces = implements<>>
+class function_block : public detail::interface_layer_t<Self, detail::no_block<Self>, Interfaces>,
+                       public detail::block_calls<Self> {
  public:
-  /// ST's SUPER^: the base block (`SUPER::M()`, `SUPER::body()`).
-  using SUPER = Base;
-  /// The base block, for iecoop's bookkeeping of inherited pins.
-  using iecoop_base_block = Base;
+  /// VAR ... END_VAR inside Self: readable from outside, written only by Self.
   template <class T>
-  using var = local<T, Derived>;
-
-  using Base::Base;
-
-  void operator()() { detail::call_block(self()); }
-  template <NamedArgument... A>
-    requires(sizeof...(A) > 0)
-  void operator()(A&&... arguments) {
-    detail::call_block(self(), std::forward<A>(arguments)...);
-  }
-  template <NamedInput... A>
-  Derived& with(A&&... arguments) {
-    return detail::assign_inputs(self(), std::forward<A>(arguments)...);
-  }
-
- private:
-  Derived& self() noexcept { return static_cast<Derived&>(*this); }
+  using var = local<T, Self>;
 };
 
 /// A FUNCTION_BLOCK type (made with function_block<> or extends<>).

@@ -9,14 +9,17 @@
 #include <iecoop/config.hpp>
 #include <iecoop/conversions.hpp>
 #include <iecoop/convert.hpp>
+#include <iecoop/extends.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/function_block.hpp>
+#include <iecoop/interface.hpp>
 #include <iecoop/lifecycle.hpp>
 #include <iecoop/literals.hpp>
 #include <iecoop/method.hpp>
 #include <iecoop/named.hpp>
 #include <iecoop/pins.hpp>
 #include <iecoop/program.hpp>
+#include <iecoop/property.hpp>
 #include <iecoop/reflect.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/string_functions.hpp>

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include <iecoop/detail/utf8.hpp>
+#include <iecoop/property.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
@@ -72,6 +73,13 @@ std::ostream& operator<<(std::ostream& os, const in_out<T>& variable) {
 template <class T>
 std::ostream& operator<<(std::ostream& os, const output<T>& variable) {
   return os << variable.get();
+}
+
+/// A property prints its value (a Get call).
+template <Property P>
+  requires requires(const P& p) { p.get(); }
+std::ostream& operator<<(std::ostream& os, const P& p) {
+  return os << p.get();
 }
 
 }  // namespace iecoop

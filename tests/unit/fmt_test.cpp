@@ -30,4 +30,18 @@ TEST_SUITE("fmt") {
     CHECK(fmt::format("{}", LREAL(0.1)) == "0.1");
     CHECK(fmt::format("[{:>10}]", "T#1s"_iec) == "[      T#1s]");
   }
+
+  TEST_CASE("a block's variables and properties print as their values") {
+    struct FB_Shown : function_block<FB_Shown> {
+      var<TIME> tElapsed{"T#1s500ms"_iec};
+      INT iLevel = 42;
+      INT Level_Get() const { return iLevel; }
+      [[no_unique_address]] property<INT, &FB_Shown::Level_Get> Level;
+      void body() {}
+    };
+    FB_Shown fb;
+    CHECK(fmt::format("{} {:>4}", fb.tElapsed, fb.Level) == "T#1s500ms   42");
+    output<BOOL> out{TRUE};
+    CHECK(fmt::format("{}", out) == "TRUE");
+  }
 }

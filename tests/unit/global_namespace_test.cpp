@@ -14,9 +14,11 @@ int BOOL = 1, BYTE = 2, WORD = 3, DWORD = 4, LWORD = 5, SINT = 6, INT = 7, DINT 
     basic_time = 38, iec_string = 39, conversion = 40, to_text = 41, parse_result = 42, AnyInt = 43, literals = 44,
     function_block = 45, extends = 46, program = 47, args = 48, pins = 49, local = 50, in_out = 51, output = 52,
     function = 53, run_fb_init = 54, reset = 55, online_change = 56, member_of = 57, internal_access = 58,
-    block_access = 59, field_name = 60, param_name = 61, first_output_t = 62, inputs_of = 63, SUPER = 64;
-int operator""_iec(const char*, std::size_t) { return 65; }
-int operator""_(const char*, std::size_t) { return 66; }
+    block_access = 59, field_name = 60, param_name = 61, first_output_t = 62, inputs_of = 63, SUPER = 64,
+    property = 65, interface_base = 66, implements = 67, itf = 68, query_interface = 69, query_pointer = 70,
+    Implements = 71, Property = 72, monitoring = 73, owner_only_get = 74, owner_only_set = 75;
+int operator""_iec(const char*, std::size_t) { return 76; }
+int operator""_(const char*, std::size_t) { return 77; }
 
 int sum_of_globals() {
   return BOOL + BYTE + WORD + DWORD + LWORD + SINT + INT + DINT + LINT + USINT + UINT + UDINT + ULINT + REAL + LREAL +
@@ -24,11 +26,13 @@ int sum_of_globals() {
          REPLACE + FIND + INT_TO_DINT + TO_INT + TRUNC + convert + fault + parse_time + integer + basic_time +
          iec_string + conversion + to_text + parse_result + AnyInt + literals + function_block + extends + program +
          args + pins + local + in_out + output + function + run_fb_init + reset + online_change + member_of +
-         internal_access + block_access + field_name + param_name + first_output_t + inputs_of + SUPER + "x"_iec + "y"_;
+         internal_access + block_access + field_name + param_name + first_output_t + inputs_of + SUPER + property +
+         interface_base + implements + itf + query_interface + query_pointer + Implements + Property + monitoring +
+         owner_only_get + owner_only_set + "x"_iec + "y"_;
 }
 
 #include "iecoop_test.hpp"
 
 TEST_CASE("the global namespace keeps every IEC name for itself") {
-  CHECK(sum_of_globals() == 66 * 67 / 2);
+  CHECK(sum_of_globals() == 77 * 78 / 2);
 }

@@ -1,0 +1,384 @@
+// PROPERTY: Get and Set accessors behind the syntax of a variable, read-only and write-only
+// properties, access modifiers on the property and on each accessor, virtual, ABSTRACT and
+// FINAL properties, monitoring modes, properties of programs and GVLs, and zero cost.
+#include "iecoop_test.hpp"
+
+#include <sstream>
+#include <type_traits>
+
+using namespace iecoop;
+
+namespace {
+
+// FUNCTION_BLOCK FB_Tank with PROPERTY Level : INT (Get and Set) and PROPERTY Full : BOOL
+// (Get only), counting the accessor calls.
+struct FB_Tank : function_block<FB_Tank> {
+  INT iLevel;
+  INT iMax = 100;
+  int gets = 0;
+  int sets = 0;
+
+  INT Level_Get() {
+    ++gets;
+    return iLevel;
+  }
+  void Level_Set(INT value) {
+    ++sets;
+    iLevel = value > iMax ? iMax : value;  // a property filters what it stores
+  }
+  [[no_unique_address]] property<INT, &FB_Tank::Level_Get, &FB_Tank::Level_Set> Level;
+
+  BOOL Full_Get() const { return iLevel >= iMax; }
+  [[no_unique_address]] property<BOOL, &FB_Tank::Full_Get> Full;
+
+  REAL Ratio_Get() const { return REAL(iLevel) / REAL(iMax); }
+  [[no_unique_address]] property<REAL, &FB_Tank::Ratio_Get> Ratio;
+
+  void body() {}
+};
+
+// The same block without its properties, to compare sizes.
+struct FB_TankData : function_block<FB_TankData> {
+  INT iLevel;
+  INT iMax = 100;
+  int gets = 0;
+  int sets = 0;
+  void body() {}
+};
+
+INT twice(INT value) { return value + value; }
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("assigning calls Set, reading calls Get") {
+    FB_Tank tank;
+    tank.Level = 40;  // tank.Level := 40;
+    CHECK(tank.sets == 1);
+    CHECK(tank.iLevel == 40);
+    const INT level = tank.Level;  // level := tank.Level;
+    CHECK(tank.gets == 1);
+    CHECK(level == 40);
+    tank.Level = 250;  // Set filters
+    CHECK(tank.iLevel == 100);
+    CHECK(tank.Full == TRUE);
+  }
+
+  TEST_CASE("a property reads as its value in expressions, comparisons and calls") {
+    FB_Tank tank;
+    tank.Level = 30;
+    CHECK(tank.Level > 20);  // IF tank.Level > 20 THEN
+    CHECK(20 < tank.Level);
+    CHECK(tank.Level == 30);
+    CHECK(tank.Level != 31);
+    CHECK(tank.Level + 1 == 31);  // integer constants are still checked while compiling
+    CHECK(1 + tank.Level == 31);
+    CHECK(tank.Level * INT(2) == 60);
+    CHECK(-tank.Level == -30);
+    CHECK(twice(tank.Level) == 60);  // passed to a function by value
+    CHECK(!tank.Full);
+    CHECK((tank.Full | BOOL(TRUE)) == TRUE);
+    if (tank.Full) FAIL("the tank is not full");
+    // REAL property: arithmetic with C++ numbers, and IEC's implicit REAL -> LREAL.
+    CHECK(tank.Ratio * 2.0f == doctest::Approx(0.6));
+    const LREAL wide = tank.Ratio;
+    CHECK(wide == doctest::Approx(0.3));
+    // A wider integer: INT -> DINT is implicit.
+    const DINT widened = tank.Level;
+    CHECK(widened == 30);
+  }
+
+  TEST_CASE("fbA.prop := fbB.prop calls fbB's Get and fbA's Set") {
+    FB_Tank a;
+    FB_Tank b;
+    b.Level = 55;
+    a.Level = b.Level;
+    CHECK(a.iLevel == 55);
+    CHECK(b.gets == 1);
+    CHECK(a.sets == 1);
+  }
+
+  TEST_CASE("copying a block copies its variables and calls no accessor") {
+    FB_Tank a;
+    a.Level = 12;
+    FB_Tank copy = a;
+    CHECK(copy.iLevel == 12);
+    FB_Tank b;
+    b = a;
+    CHECK(b.iLevel == 12);
+    CHECK(b.gets == a.gets);
+    CHECK(b.sets == a.sets);  // the copied counts, no new calls
+    CHECK(a.gets == 0);
+  }
+
+  TEST_CASE("a property costs no bytes and lives at its block's address") {
+    static_assert(sizeof(FB_Tank) == sizeof(FB_TankData));
+    static_assert(std::is_empty_v<decltype(FB_Tank::Level)>);
+    FB_Tank tank;
+    CHECK(static_cast<void*>(&tank.Level) == static_cast<void*>(&tank));
+    CHECK(static_cast<void*>(&tank.Full) == static_cast<void*>(&tank));
+  }
+
+  TEST_CASE("a property cannot be copied out of its block") {
+    using level_type = decltype(FB_Tank::Level);
+    static_assert(!std::is_copy_constructible_v<level_type>);
+    static_assert(std::is_convertible_v<level_type&, INT>);
+    // The owner itself stays copyable.
+    static_assert(std::is_copy_constructible_v<FB_Tank> && std::is_copy_assignable_v<FB_Tank>);
+    FB_Tank tank;
+    tank.Level = 3;
+    auto value = tank.Level.get();  // the value, not the property
+    static_assert(std::is_same_v<decltype(value), INT>);
+    CHECK(value == 3);
+  }
+
+  TEST_CASE("reading through a const block uses a const Get") {
+    FB_Tank tank;
+    tank.Level = 100;
+    const FB_Tank& view = tank;
+    CHECK(view.Full == TRUE);
+  }
+
+  TEST_CASE("properties print as their values") {
+    FB_Tank tank;
+    tank.Level = 7;
+    std::ostringstream out;
+    out << tank.Level << ' ' << tank.Full;
+    CHECK(out.str() == "7 FALSE");
+  }
+}
+
+namespace {
+
+// Read-only and write-only properties.
+struct FB_Setpoint : function_block<FB_Setpoint> {
+  LREAL rTarget;
+  // PROPERTY Target : LREAL (Set only: write-only)
+  void Target_Set(LREAL value) { rTarget = value; }
+  [[no_unique_address]] property<LREAL, nullptr, &FB_Setpoint::Target_Set> Target;
+  // PROPERTY Reached : BOOL (Get only: read-only)
+  BOOL Reached_Get() const { return rTarget > 10.0; }
+  [[no_unique_address]] property<BOOL, &FB_Setpoint::Reached_Get> Reached;
+  void body() {}
+};
+
+template <class P, class V>
+concept assignable = requires(P& p, V v) { p = v; };
+template <class P, class V>
+concept readable_as = requires(const P& p) { V(p); };
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("a read-only property has no Set, a write-only one no Get") {
+    FB_Setpoint sp;
+    sp.Target = 12.5;
+    CHECK(sp.rTarget == 12.5);
+    CHECK(sp.Reached == TRUE);
+    using target = decltype(FB_Setpoint::Target);
+    using reached = decltype(FB_Setpoint::Reached);
+    static_assert(target::writable && !target::readable);
+    static_assert(reached::readable && !reached::writable);
+    // (Reading Target or assigning Reached does not compile: tests/compile_fail/property_*.)
+  }
+}
+
+namespace {
+
+// PRIVATE Set accessor: readable everywhere, written only by the block itself.
+struct FB_Counter : function_block<FB_Counter> {
+  DINT dCount;
+  DINT Count_Get() const { return dCount; }
+  void Count_Set(DINT value) { dCount = value; }
+  // PROPERTY Count : DINT    Get: PUBLIC    Set: PRIVATE
+  [[no_unique_address]] property<DINT, &FB_Counter::Count_Get, &FB_Counter::Count_Set, owner_only_set> Count;
+
+  BOOL bPulse;
+  void body() {
+    if (bPulse) Count = Count + 1;  // Count := Count + 1;  (inside: both accessors)
+  }
+  void Reset() { Count = 0; }  // METHOD Reset
+};
+
+// The property's own access modifier: PROTECTED, used by a derived block.
+struct FB_Base : function_block<FB_Base> {
+  virtual ~FB_Base() = default;
+  virtual void body() {}
+
+ protected:
+  INT iHidden;
+  INT Hidden_Get() const { return iHidden; }
+  void Hidden_Set(INT value) { iHidden = value; }
+  // PROPERTY PROTECTED Hidden : INT
+  [[no_unique_address]] property<INT, &FB_Base::Hidden_Get, &FB_Base::Hidden_Set> Hidden;
+};
+struct FB_Derived : extends<FB_Derived, FB_Base> {
+  INT iSeen;
+  void body() override {
+    Hidden = Hidden + 2;  // a derived block uses the PROTECTED property
+    iSeen = Hidden;
+  }
+};
+
+template <class B>
+concept hidden_visible = requires(B& b) { b.Hidden; };
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("a PRIVATE accessor: only the block assigns, everyone reads") {
+    FB_Counter counter;
+    counter.bPulse = TRUE;
+    counter();
+    counter();
+    CHECK(counter.Count == 2);  // Get is public
+    counter.Reset();
+    CHECK(counter.Count == 0);
+    using count = decltype(FB_Counter::Count);
+    static_assert(readable_as<count, DINT>);
+    static_assert(!assignable<count, DINT>);  // Set is private (compile_fail/property_owner_only_set)
+  }
+
+  TEST_CASE("a PROTECTED property: derived blocks use it, others cannot see it") {
+    FB_Derived derived;
+    derived();
+    derived();
+    CHECK(derived.iSeen == 4);
+    static_assert(!hidden_visible<FB_Derived>);
+    static_assert(!hidden_visible<FB_Base>);
+  }
+}
+
+namespace {
+
+// ABSTRACT, virtual and FINAL properties.
+struct FB_Sensor : function_block<FB_Sensor> {
+  virtual ~FB_Sensor() = default;
+  virtual void body() {}
+  // PROPERTY ABSTRACT Value : LREAL
+  virtual LREAL Value_Get() = 0;
+  [[no_unique_address]] property<LREAL, &FB_Sensor::Value_Get> Value;
+  // PROPERTY Scale : LREAL (overridable)
+  LREAL rScale = 1.0;
+  virtual LREAL Scale_Get() { return rScale; }
+  virtual void Scale_Set(LREAL value) { rScale = value; }
+  [[no_unique_address]] property<LREAL, &FB_Sensor::Scale_Get, &FB_Sensor::Scale_Set> Scale;
+};
+
+struct FB_Thermo : extends<FB_Thermo, FB_Sensor> {
+  LREAL rRaw = 21.5;
+  LREAL Value_Get() final { return rRaw * Scale; }  // implements Value, FINAL
+  void Scale_Set(LREAL value) override { rScale = value < 0.0 ? LREAL(0.0) : value; }  // overrides Set only
+  // A property of the derived block itself (its owner starts with the base's data).
+  LREAL Raw_Get() const { return rRaw; }
+  [[no_unique_address]] property<LREAL, &FB_Thermo::Raw_Get> Raw;
+};
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("ABSTRACT, overridden and FINAL accessors dispatch like methods") {
+    static_assert(std::is_abstract_v<FB_Sensor>);
+    FB_Thermo thermo;
+    FB_Sensor& sensor = thermo;
+    CHECK(sensor.Value == doctest::Approx(21.5));
+    sensor.Scale = 2.0;
+    CHECK(sensor.Value == doctest::Approx(43.0));
+    sensor.Scale = -1.0;  // the derived Set
+    CHECK(thermo.Scale == 0.0);
+    CHECK(thermo.Raw == 21.5);
+    CHECK(static_cast<void*>(&thermo.Raw) == static_cast<void*>(&thermo));
+  }
+}
+
+namespace {
+
+// {attribute 'monitoring' := 'call'} and {attribute 'monitoring' := 'variable'}.
+struct FB_Monitored : function_block<FB_Monitored> {
+  INT iValue;
+  int gets = 0;
+  INT Called_Get() {
+    ++gets;
+    return iValue;
+  }
+  // {attribute 'monitoring' := 'call'}
+  [[no_unique_address]] property<INT, &FB_Monitored::Called_Get> Called;
+
+  INT Recorded_monitor;  // the implicit variable 'variable' monitoring shows
+  INT Recorded_Get() {
+    ++gets;
+    return iValue;
+  }
+  void Recorded_Set(INT value) { iValue = value; }
+  // {attribute 'monitoring' := 'variable'}
+  [[no_unique_address]] property<INT, &FB_Monitored::Recorded_Get, &FB_Monitored::Recorded_Set,
+                                 monitoring::variable<&FB_Monitored::Recorded_monitor>>
+      Recorded;
+
+  void body() {}
+};
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("'call' monitoring calls Get to show the value") {
+    FB_Monitored fb;
+    fb.iValue = 5;
+    static_assert(std::is_same_v<decltype(fb.Called)::monitoring_mode, monitoring::call>);
+    CHECK(fb.Called.monitor() == 5);
+    CHECK(fb.gets == 1);  // the watch list ran the accessor
+  }
+
+  TEST_CASE("'variable' monitoring shows the value of the last Get or Set, calling nothing") {
+    FB_Monitored fb;
+    fb.Recorded = 8;  // Set records 8
+    CHECK(fb.Recorded.monitor() == 8);
+    CHECK(fb.gets == 0);
+    fb.iValue = 9;                      // changed behind the property's back:
+    CHECK(fb.Recorded.monitor() == 8);  // the shown value is stale, as CODESYS warns
+    const INT read = fb.Recorded;       // Get records 9
+    CHECK(read == 9);
+    CHECK(fb.Recorded.monitor() == 9);
+    CHECK(fb.gets == 1);
+  }
+}
+
+namespace {
+
+// A PROGRAM's property, and a GVL's.
+struct PRG_Line : program<PRG_Line> {
+  UDINT udParts;
+  UDINT Parts_Get() const { return udParts; }
+  [[no_unique_address]] property<UDINT, &PRG_Line::Parts_Get> Parts;
+  void body() { udParts = udParts + 1U; }
+};
+
+// VAR_GLOBAL  gMode : INT; END_VAR  with  PROPERTY ModeName : STRING
+struct GVL {
+  INT gMode;
+  STRING<> ModeName_Get() const { return gMode == 0 ? STRING<>("Manual") : STRING<>("Auto"); }
+  void ModeName_Set(STRING<> value) { gMode = value == "Auto" ? INT(1) : INT(0); }
+  [[no_unique_address]] property<STRING<>, &GVL::ModeName_Get, &GVL::ModeName_Set> ModeName;
+};
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("a PROGRAM's property") {
+    PRG_Line line;
+    PRG_Line::instance()();
+    PRG_Line::instance()();
+    CHECK(PRG_Line::instance().Parts == 2U);
+    CHECK(static_cast<void*>(&line.Parts) == static_cast<void*>(&line));
+  }
+
+  TEST_CASE("a global variable list's property, of a STRING type") {
+    GVL gvl;
+    CHECK(gvl.ModeName == "Manual");
+    gvl.ModeName = "Auto";
+    CHECK(gvl.gMode == 1);
+    CHECK(gvl.ModeName.get() == "Auto");
+    static_assert(sizeof(GVL) == sizeof(INT));
+    CHECK(static_cast<void*>(&gvl.ModeName) == static_cast<void*>(&gvl));
+  }
+}
