@@ -133,8 +133,11 @@ inline namespace literals {
  *     WORD  w  = "WORD#16#FFFF"_iec;
  *     "t#5m68s"_iec;                     // does not compile: only the highest unit may overflow
  */
+// constexpr, not consteval: Clang 14 does not evaluate a consteval literal operator template
+// used inside a function template, and leaves an undefined reference instead. Every check is
+// a static_assert on S, and the value is a constant either way.
 template <detail::fixed_string S>
-consteval auto operator""_iec() noexcept {
+constexpr auto operator""_iec() noexcept {
   constexpr detail::literal_type type = detail::classify_literal<S>();
   if constexpr (type == detail::literal_type::untyped) {
     static_assert(detail::dependent_false<decltype(S)>,

@@ -117,9 +117,10 @@ template <class T>
 concept NamedArgument = NamedInput<T> || NamedOutput<T>;
 
 inline namespace literals {
-/// A parameter name: "IN"_ (see param_name).
+/// A parameter name: "IN"_ (see param_name). (constexpr, not consteval: Clang 14 leaves a
+/// consteval literal operator template used inside a function template undefined.)
 template <detail::fixed_string Name>
-consteval param_name<Name> operator""_() noexcept {
+constexpr param_name<Name> operator""_() noexcept {
   return {};
 }
 }  // namespace literals
