@@ -6,9 +6,14 @@
 
 // IWYU pragma: begin_exports
 #include <iecoop/access.hpp>
+#include <iecoop/bistables.hpp>
 #include <iecoop/config.hpp>
 #include <iecoop/conversions.hpp>
 #include <iecoop/convert.hpp>
+#include <iecoop/counters.hpp>
+#include <iecoop/cycle_clock.hpp>
+#include <iecoop/dialect.hpp>
+#include <iecoop/edges.hpp>
 #include <iecoop/extends.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/function_block.hpp>
@@ -25,6 +30,7 @@
 #include <iecoop/string_functions.hpp>
 #include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
+#include <iecoop/timers.hpp>
 #include <iecoop/types.hpp>
 #include <iecoop/var.hpp>
 // IWYU pragma: end_exports
