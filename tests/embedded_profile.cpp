@@ -2,6 +2,8 @@
 // literals, strings, string functions, conversions, blocks, properties, interfaces with their
 // queries (no RTTI) and the fault path. Returns 0 when
 // every result is right.
+#include <cstdint>
+
 #include <iecoop/iecoop.hpp>
 
 namespace {
@@ -105,6 +107,20 @@ int main() {
   expect(drive.dSpeed == 0 && query_pointer<FB_Drive>(ip) == &drive);
   ip = idle;
   expect(query_interface(ip, brake) == FALSE && brake == nullptr && query_pointer<FB_Drive>(ip) == nullptr);
+
+  // The standard blocks, driven by the cycle clock as a SysTick handler would drive it.
+  TON jam;
+  CTU parts;
+  iec::F_TRIG released;
+  for (int tick = 0; tick <= 300; ++tick) {
+    cycle_clock::set(LTIME::from_ticks(static_cast<std::uint64_t>(tick) * 1'000'000));
+    jam("IN"_ = BOOL(tick >= 100), "PT"_ = "T#150ms"_iec);
+    parts("CU"_ = BOOL(tick % 20 < 10), "RESET"_ = FALSE, "PV"_ = 12);
+    released("CLK"_ = BOOL(tick < 250));
+    if (tick == 249) expect(jam.Q == FALSE && jam.ET == "T#149ms"_iec);
+    if (tick == 250) expect(jam.Q == TRUE && released.Q == TRUE);
+  }
+  expect(parts.CV == 16 && parts.Q == TRUE && released.Q == FALSE);
 
   return failures;
 }

@@ -1,0 +1,420 @@
+// iecoop-replay: drives one standard function block from a stimulus file and writes the trace
+// of its outputs, for conformance checks against other IEC 61131-3 implementations.
+//
+//     iecoop-replay [--dialect NAME] FB < stimulus.csv > trace.csv
+//
+// FB is one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS (counters: their INT variants), in
+// the dialect NAME (codesys, the default; iec; matiec). The stimulus has the header
+// `cycle,time_ms,<inputs...>` and one row per cycle; for each row the tool sets the cycle clock
+// to time_ms, assigns the row's inputs, calls the block once and writes the row of the trace:
+// `cycle,time_ms,<inputs as given...>,<outputs...>[,extra columns]`. BOOL is 0 or 1, INT a
+// signed decimal, a TIME a whole number of milliseconds in a column named <pin>_ms. Columns
+// that are no input are copied through, at the end. Bad input: one line on stderr naming the
+// row and column, exit status 2, and nothing on stdout.
+#include <iecoop/iecoop.hpp>
+
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace iecoop;
+
+constexpr int exit_bad_input = 2;
+
+/// Bad input: the message, already naming where.
+struct input_error {
+  std::string message;
+};
+
+// --- CSV ------------------------------------------------------------------------------
+
+/// The fields of one CSV line, each as written (quotes kept, so extra columns are copied
+/// through unchanged). A quoted field may hold commas and doubled quotes, not line breaks.
+std::optional<std::vector<std::string>> split_fields(std::string_view line) {
+  std::vector<std::string> fields;
+  std::size_t i = 0;
+  while (true) {
+    const std::size_t start = i;
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      while (true) {
+        if (i >= line.size()) return std::nullopt;  // unterminated quote
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            i += 2;
+            continue;
+          }
+          ++i;
+          break;
+        }
+        ++i;
+      }
+      if (i < line.size() && line[i] != ',') return std::nullopt;  // text after the closing quote
+    } else {
+      while (i < line.size() && line[i] != ',') ++i;
+    }
+    fields.emplace_back(line.substr(start, i - start));
+    if (i >= line.size()) break;
+    ++i;  // the comma
+  }
+  return fields;
+}
+
+// --- Values -----------------------------------------------------------------------------
+
+/// A whole non-negative decimal number (digits only) no larger than `max`.
+std::optional<std::uint64_t> parse_unsigned(std::string_view text, std::uint64_t max) {
+  if (text.empty()) return std::nullopt;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+  }
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value > max) return std::nullopt;
+  return value;
+}
+
+/// The largest time_ms whose nanoseconds fit the cycle clock's LTIME.
+constexpr std::uint64_t max_time_ms = std::numeric_limits<std::uint64_t>::max() / 1'000'000;
+
+/// Parses a pin's value written in the stimulus; on failure returns why.
+template <class T>
+std::optional<std::string> parse_pin_value(std::string_view text, T& value) {
+  if constexpr (std::is_same_v<T, BOOL>) {
+    if (text == "0" || text == "1") {
+      value = BOOL(text == "1");
+      return std::nullopt;
+    }
+    return "a BOOL is 0 or 1";
+  } else if constexpr (std::is_same_v<T, TIME>) {
+    if (const auto ms = parse_unsigned(text, std::numeric_limits<TIME::rep>::max())) {
+      value = TIME::from_ticks(static_cast<TIME::rep>(*ms));
+      return std::nullopt;
+    }
+    return "a TIME is a whole number of milliseconds from 0 to 4294967295";
+  } else {
+    static_assert(AnyInteger<T>, "iecoop-replay: a pin type without a stimulus encoding");
+    using rep = typename T::rep;
+    const bool negative = !text.empty() && text.front() == '-';
+    const std::string_view digits = text.substr(negative || (!text.empty() && text.front() == '+') ? 1 : 0);
+    const auto magnitude = parse_unsigned(digits, std::numeric_limits<std::uint64_t>::max());
+    std::ostringstream why;
+    why << "an " << (std::is_signed_v<rep> ? "INT" : "unsigned integer") << " here is a decimal number from "
+        << +std::numeric_limits<rep>::min() << " to " << +std::numeric_limits<rep>::max();
+    if (!magnitude) return why.str();
+    if (negative) {
+      if (*magnitude > 0 && !(std::is_signed_v<rep> &&
+                              *magnitude <= static_cast<std::uint64_t>(std::numeric_limits<rep>::max()) + 1u)) {
+        return why.str();
+      }
+      value = T(static_cast<rep>(-static_cast<std::int64_t>(*magnitude)));
+    } else {
+      if (!std::in_range<rep>(*magnitude)) return why.str();
+      value = T(static_cast<rep>(*magnitude));
+    }
+    return std::nullopt;
+  }
+}
+
+/// An output's value in the trace's encoding.
+template <class T>
+std::string format_pin_value(const T& value) {
+  if constexpr (std::is_same_v<T, BOOL>) {
+    return value ? "1" : "0";
+  } else if constexpr (std::is_same_v<T, TIME>) {
+    return std::to_string(value.count());
+  } else {
+    return std::to_string(+value.value());
+  }
+}
+
+// --- Pins -------------------------------------------------------------------------------
+
+/// The type of the variable a pin member designates (outputs are local<T, ...>).
+template <class T>
+struct pin_value {
+  using type = T;
+};
+template <class T, class Owner>
+struct pin_value<local<T, Owner>> {
+  using type = T;
+};
+template <class M>
+struct member_type;
+template <class T, class C>
+struct member_type<T C::*> {
+  using type = T;
+};
+template <auto Member>
+using pin_value_t = typename pin_value<typename member_type<std::remove_cv_t<decltype(Member)>>::type>::type;
+
+/// The column name of a pin: its formal name, with `_ms` for a TIME.
+template <auto Member>
+std::string column_name() {
+  std::string name(member_name<Member>);
+  if constexpr (std::is_same_v<pin_value_t<Member>, TIME>) name += "_ms";
+  return name;
+}
+
+/// The other spelling a column of this pin may have: CODESYS's RESET and LOAD for IEC's R
+/// and LD of the counters, and the other way round.
+std::string_view alternative_name(std::string_view name, bool is_counter) {
+  if (!is_counter) return {};
+  if (name == "R") return "RESET";
+  if (name == "RESET") return "R";
+  if (name == "LD") return "LOAD";
+  if (name == "LOAD") return "LD";
+  return {};
+}
+
+/// How to read one input of block B from a stimulus field.
+template <class B>
+struct input_pin {
+  std::string column;
+  std::string_view alternative;
+  std::optional<std::string> (*assign)(B&, std::string_view);
+};
+
+/// How to write one output of block B.
+template <class B>
+struct output_pin {
+  std::string column;
+  std::string (*read)(const B&);
+};
+
+template <class B, std::size_t... I>
+std::vector<input_pin<B>> input_pins(bool is_counter, std::index_sequence<I...>) {
+  using pins = inputs_of<B>;
+  return {input_pin<B>{column_name<pin<pins, I>>(), alternative_name(pins::names[I], is_counter),
+                       [](B& block, std::string_view text) { return parse_pin_value(text, block.*pin<pins, I>); }}...};
+}
+
+template <class B, std::size_t... I>
+std::vector<output_pin<B>> output_pins(std::index_sequence<I...>) {
+  using pins = outputs_of<B>;
+  return {output_pin<B>{column_name<pin<pins, I>>(),
+                        [](const B& block) { return format_pin_value(pin_value_t<pin<pins, I>>((block.*pin<pins, I>).get())); }}...};
+}
+
+// --- The replay -------------------------------------------------------------------------
+
+std::string where(std::size_t line, std::string_view column) {
+  std::ostringstream text;
+  text << "row " << line - 1 << " (line " << line << ")";
+  if (!column.empty()) text << ", column \"" << column << "\"";
+  return text.str();
+}
+
+/// Replays `stimulus` on a fresh block B; returns the trace, or throws input_error.
+template <class B>
+std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_counter) {
+  const std::vector<input_pin<B>> inputs = input_pins<B>(is_counter, std::make_index_sequence<inputs_of<B>::size>{});
+  const std::vector<output_pin<B>> outputs = output_pins<B>(std::make_index_sequence<outputs_of<B>::size>{});
+
+  // Lines, without their line breaks (LF or CRLF); a last line break ends the file.
+  std::vector<std::string_view> lines;
+  for (std::size_t start = 0; start < stimulus.size();) {
+    std::size_t end = stimulus.find('\n', start);
+    if (end == std::string_view::npos) end = stimulus.size();
+    std::string_view line = stimulus.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    lines.push_back(line);
+    start = end + 1;
+  }
+  if (lines.empty()) throw input_error{"line 1: the stimulus is empty; it needs the header cycle,time_ms,<inputs...>"};
+
+  // The header.
+  const auto header = split_fields(lines[0]);
+  if (!header) throw input_error{"line 1 (header): a quoted column name is not closed"};
+  if (header->size() < 2 || (*header)[0] != "cycle" || (*header)[1] != "time_ms") {
+    throw input_error{"line 1 (header): the first two columns must be cycle,time_ms"};
+  }
+  std::vector<std::ptrdiff_t> column_input(header->size(), -1);  // which input each column sets
+  std::vector<bool> seen(inputs.size(), false);
+  for (std::size_t c = 2; c < header->size(); ++c) {
+    const std::string& name = (*header)[c];
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      if (name == inputs[i].column || (!inputs[i].alternative.empty() && name == inputs[i].alternative)) {
+        if (seen[i]) throw input_error{"line 1 (header), column \"" + name + "\": input " + inputs[i].column + " is given twice"};
+        seen[i] = true;
+        column_input[c] = static_cast<std::ptrdiff_t>(i);
+      }
+    }
+    if (name == "cycle" || name == "time_ms") throw input_error{"line 1 (header), column \"" + name + "\": given twice"};
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (!seen[i]) {
+      throw input_error{"line 1 (header), column \"" + inputs[i].column + "\": missing; " + std::string(fb_name) +
+                        " needs a column for each of its inputs"};
+    }
+  }
+
+  // The trace's header: cycle, time, the inputs as given, the outputs, the extra columns.
+  std::string trace = "cycle,time_ms";
+  for (std::size_t c = 2; c < header->size(); ++c) {
+    if (column_input[c] >= 0) trace += "," + (*header)[c];
+  }
+  for (const output_pin<B>& output : outputs) trace += "," + output.column;
+  for (std::size_t c = 2; c < header->size(); ++c) {
+    if (column_input[c] < 0) trace += "," + (*header)[c];
+  }
+  trace += '\n';
+
+  // The rows: one call each, on one instance.
+  B block;
+  std::uint64_t previous_ms = 0;
+  std::size_t last = lines.size();
+  while (last > 1 && lines[last - 1].empty()) --last;  // blank lines at the end
+  for (std::size_t l = 1; l < last; ++l) {
+    const std::size_t line_number = l + 1;
+    const auto fields = split_fields(lines[l]);
+    if (!fields) throw input_error{where(line_number, "") + ": a quoted field is not closed, or text follows its closing quote"};
+    if (fields->size() != header->size()) {
+      throw input_error{where(line_number, "") + ": " + std::to_string(fields->size()) + " fields, but the header has " +
+                        std::to_string(header->size())};
+    }
+    if (!parse_unsigned((*fields)[0], std::numeric_limits<std::uint64_t>::max())) {
+      throw input_error{where(line_number, "cycle") + ": \"" + (*fields)[0] + "\" is not a whole number"};
+    }
+    const auto time_ms = parse_unsigned((*fields)[1], max_time_ms);
+    if (!time_ms) {
+      throw input_error{where(line_number, "time_ms") + ": \"" + (*fields)[1] + "\" is not a whole number of milliseconds from 0 to " +
+                        std::to_string(max_time_ms)};
+    }
+    if (l > 1 && *time_ms < previous_ms) {
+      throw input_error{where(line_number, "time_ms") + ": time goes backwards, from " + std::to_string(previous_ms) + " to " +
+                        std::to_string(*time_ms) + " ms"};
+    }
+    previous_ms = *time_ms;
+
+    cycle_clock::set(LTIME::from_ticks(*time_ms * 1'000'000));
+    for (std::size_t c = 2; c < header->size(); ++c) {
+      if (column_input[c] < 0) continue;
+      if (const auto why = inputs[static_cast<std::size_t>(column_input[c])].assign(block, (*fields)[c])) {
+        throw input_error{where(line_number, (*header)[c]) + ": \"" + (*fields)[c] + "\" is not valid; " + *why};
+      }
+    }
+    block();
+
+    trace += (*fields)[0] + "," + (*fields)[1];
+    for (std::size_t c = 2; c < header->size(); ++c) {
+      if (column_input[c] >= 0) trace += "," + (*fields)[c];
+    }
+    for (const output_pin<B>& output : outputs) trace += "," + output.read(block);
+    for (std::size_t c = 2; c < header->size(); ++c) {
+      if (column_input[c] < 0) trace += "," + (*fields)[c];
+    }
+    trace += '\n';
+  }
+  return trace;
+}
+
+/// The blocks the tool drives, in dialect D.
+/// Replays `stimulus` on the block called `fb` in dialect D; nothing if there is no such
+/// block. With check_name_only, only says whether there is one (an empty trace).
+template <Dialect D>
+std::optional<std::string> replay_in(std::string_view fb, std::string_view stimulus, bool check_name_only = false) {
+  const auto run = [&]<class B>(bool is_counter) -> std::optional<std::string> {
+    if (check_name_only) return std::string();
+    return replay<B>(stimulus, fb, is_counter);
+  };
+  if (fb == "TON") return run.template operator()<TON>(false);
+  if (fb == "TOF") return run.template operator()<TOF>(false);
+  if (fb == "TP") return run.template operator()<TP>(false);
+  if (fb == "CTU") return run.template operator()<up_counter<INT, D>>(true);
+  if (fb == "CTD") return run.template operator()<down_counter<INT, D>>(true);
+  if (fb == "CTUD") return run.template operator()<up_down_counter<INT, D>>(true);
+  if (fb == "R_TRIG") return run.template operator()<R_TRIG>(false);
+  if (fb == "F_TRIG") return run.template operator()<falling_edge_trigger<D>>(false);
+  if (fb == "SR") return run.template operator()<SR>(false);
+  if (fb == "RS") return run.template operator()<RS>(false);
+  return std::nullopt;
+}
+
+constexpr std::string_view usage =
+    "usage: iecoop-replay [--dialect NAME] FB < stimulus.csv > trace.csv\n"
+    "  FB:      TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS (counters: their INT variants)\n"
+    "  NAME:    codesys (default), iec, matiec\n"
+    "  stimulus: header cycle,time_ms,<inputs...>; BOOL 0/1, INT decimal, TIME as <pin>_ms\n";
+
+int fail(const std::string& message) {
+  std::cerr << "iecoop-replay: " << message << '\n';
+  return exit_bad_input;
+}
+
+std::string upper(std::string_view text) {
+  std::string result(text);
+  for (char& c : result) {
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  }
+  return result;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string dialect = "codesys";
+  std::optional<std::string> fb;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << usage;
+      return 0;
+    }
+    if (arg == "--dialect") {
+      if (i + 1 >= argc) return fail("--dialect needs a name: codesys, iec or matiec");
+      dialect = argv[++i];
+    } else if (arg.starts_with("--dialect=")) {
+      dialect = std::string(arg.substr(10));
+    } else if (arg.starts_with("-")) {
+      return fail("unknown option " + std::string(arg) + "; see iecoop-replay --help");
+    } else if (fb) {
+      return fail("one FB only, got " + *fb + " and " + std::string(arg));
+    } else {
+      fb = upper(arg);  // ST names are case-insensitive
+    }
+  }
+  if (!fb) return fail("which FB? usage: iecoop-replay [--dialect NAME] FB < stimulus.csv > trace.csv");
+
+  // Arguments first, so that a wrong one does not wait for a stimulus.
+  if (dialect != codesys::dialect::name && dialect != iec::dialect::name && dialect != matiec::dialect::name) {
+    return fail("unknown dialect \"" + dialect + "\"; use codesys, iec or matiec");
+  }
+  if (!replay_in<codesys::dialect>(*fb, {}, /*check_name_only=*/true)) {
+    return fail("unknown FB \"" + *fb + "\"; use one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS");
+  }
+
+  const std::string stimulus{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  try {
+    std::optional<std::string> trace;
+    if (dialect == codesys::dialect::name) {
+      trace = replay_in<codesys::dialect>(*fb, stimulus);
+    } else if (dialect == iec::dialect::name) {
+      trace = replay_in<iec::dialect>(*fb, stimulus);
+    } else {
+      trace = replay_in<matiec::dialect>(*fb, stimulus);
+    }
+    std::cout << *trace;  // all or nothing: written only once the whole stimulus is good
+    std::cout.flush();
+    if (!std::cout) {
+      std::cerr << "iecoop-replay: could not write the trace\n";
+      return 1;
+    }
+  } catch (const input_error& error) {
+    return fail(error.message);
+  }
+  return 0;
+}
