@@ -179,13 +179,15 @@ void* answer_query(D* block, type_id wanted, type_list<Is...>) noexcept {
 /// The layer under a block that implements interfaces: Base (the block it extends, or
 /// nothing), the interfaces it adds, and the one answer to every query, given as Self — the
 /// block being defined, so that queries find it and what it extends.
+//
+// The interfaces are virtual bases, so that an interface the block reaches along two ways —
+// listed and also extended by another listed one, or implemented by the block it extends and
+// listed again, or extended by an interface this block adds — is one interface in the block.
 template <class Self, class Base, class... Is>
-class implementing : public Base, public Is... {
+class implementing : public Base, public virtual Is... {
   static_assert((is_interface<Is> && ...),
                 "iecoop: implements<I...> lists interfaces (classes derived from interface_base<I>); a block to "
                 "extend goes before it: extends<Self, Base, implements<I...>>");
-  static_assert(!(std::is_base_of_v<Is, Base> || ...),
-                "iecoop: the block extended already implements this interface; leave it out of implements<>");
 
  public:
   using Base::Base;
@@ -320,9 +322,10 @@ concept Implements = detail::is_interface<I> && std::derived_from<T, I> && !std:
  */
 template <class J, class I>
 BOOL query_interface(const itf<I>& source, itf<J>& dest) noexcept {
+  I* const block = source.get();  // first: source and dest may be the same variable
   dest = nullptr;
-  if (!source) return FALSE;
-  void* found = source.get()->iecoop_query(detail::type_id_of<J>());
+  if (block == nullptr) return FALSE;
+  void* found = block->iecoop_query(detail::type_id_of<J>());
   if (found == nullptr) return FALSE;
   dest = *static_cast<J*>(found);
   return TRUE;

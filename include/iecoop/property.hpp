@@ -30,6 +30,7 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/value_operators.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -94,6 +95,14 @@ struct monitoring_of<monitoring::variable<Shadow>, Rest...> {
 template <class First, class... Rest>
 struct monitoring_of<First, Rest...> : monitoring_of<Rest...> {};
 
+/// iecoop_value_wrapper of a property only its block may read (not a value wrapper).
+struct property_read_by_owner_only {};
+
+/// A value of T converts to U implicitly and without narrowing (a REAL property reads as
+/// LREAL, not as int).
+template <class T, class U>
+concept widens_to = !std::is_same_v<U, T> && std::is_convertible_v<const T&, U> && requires(const T& t) { U{t}; };
+
 }  // namespace detail
 
 /**
@@ -120,7 +129,9 @@ class property {
 
  public:
   using value_type = T;
-  using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
+  /// In expressions, its value (detail/value_operators.hpp); a property only its block may
+  /// read opts out, so that the value's own operators apply inside the block.
+  using iecoop_value_wrapper = std::conditional_t<owner_get, detail::property_read_by_owner_only, void>;
   using owner_type = detail::property_owner<Get, Set>;
   using monitoring_mode = typename detail::monitoring_of<Options...>::type;
   static constexpr bool readable = !std::is_same_v<decltype(Get), std::nullptr_t>;
@@ -128,19 +139,37 @@ class property {
 
   constexpr property() noexcept = default;
 
+  // Reading through a non-const block calls Get on it; through a const block, a const Get
+  // (`T Name_Get() const`) is called as const (see read() const).
+
   /// Reading the property calls Get (`iVar = fbA.prop_iA;`).
-  operator T() const  // NOLINT: reads as the variable
+  operator T()  // NOLINT: reads as the variable
     requires(!owner_get)
   {
     return read();
   }
-  /// ... also where T converts on (`LREAL x = fb.rProp;` for a REAL property).
+  operator T() const  // NOLINT
+    requires(!owner_get)
+  {
+    return read();
+  }
+  /// ... also where T converts on without narrowing (`LREAL x = fb.rProp;` for a REAL property).
   template <class U>
-    requires(!owner_get && !std::is_same_v<U, T> && std::is_convertible_v<const T&, U>)
+    requires(!owner_get && detail::widens_to<T, U>)
+  operator U() {  // NOLINT
+    return read();
+  }
+  template <class U>
+    requires(!owner_get && detail::widens_to<T, U>)
   operator U() const {  // NOLINT
     return read();
   }
   /// `IF fb.bProp THEN`
+  explicit operator bool()
+    requires(!owner_get && std::is_constructible_v<bool, const T&>)
+  {
+    return static_cast<bool>(read());
+  }
   explicit operator bool() const
     requires(!owner_get && std::is_constructible_v<bool, const T&>)
   {
@@ -162,6 +191,11 @@ class property {
   }
 
   /// What reading the property gives (its Get accessor).
+  [[nodiscard]] T get()
+    requires(!owner_get)
+  {
+    return read();
+  }
   [[nodiscard]] T get() const
     requires(!owner_get)
   {
@@ -176,6 +210,15 @@ class property {
 
   /// The value a watch list shows: the value last recorded by Get or Set ('variable'), or a
   /// call of Get ('call', which runs whatever the accessor does).
+  [[nodiscard]] T monitor()
+    requires(readable || !std::is_same_v<monitoring_mode, monitoring::call>)
+  {
+    if constexpr (std::is_same_v<monitoring_mode, monitoring::call>) {
+      return read();
+    } else {
+      return shadow_ref();
+    }
+  }
   [[nodiscard]] T monitor() const
     requires(readable || !std::is_same_v<monitoring_mode, monitoring::call>)
   {
@@ -189,16 +232,41 @@ class property {
  private:
   friend owner_type;
 
-  // Only the owner copies its properties, when the block itself is copied (ST's
-  // `fbX := fbY` copies the instance's variables; a property has none, so its copy does
-  // nothing and calls no accessor). Anywhere else a copy would be a property without its
-  // block: `auto x = fb.prop;` does not compile; write `INT x = fb.prop;` or
-  // `auto x = fb.prop.get();`.
+  // Only the owner copies its properties, when the block itself is copied. A property has no
+  // variables, so constructing a copy does nothing and calls no accessor. Anywhere else a
+  // copy would be a property without its block: `auto x = fb.prop;` does not compile; write
+  // `INT x = fb.prop;` or `auto x = fb.prop.get();` (inside the block too, where C++ cannot
+  // stop `auto`).
   constexpr property(const property&) noexcept = default;
-  constexpr property& operator=(const property&) noexcept { return *this; }
+  // Assigning from a const property (the block's own `p = other.p` with a const `other`, or
+  // the whole block assigned, ST's `fbA := fbB`) calls the other's Get and this one's Set, as
+  // `fbA.p = fbB.p` does. An online change copies the block without calling accessors.
+  property& operator=(const property& other) {
+    if (&other != this && !detail::current_lifecycle.relocating) {
+      if constexpr (readable && writable) write(other.read());
+    }
+    return *this;
+  }
 
   // The accessors for the owner only (owner_only_get / owner_only_set).
+  operator T()  // NOLINT
+    requires(owner_get)
+  {
+    return read();
+  }
   operator T() const  // NOLINT
+    requires(owner_get)
+  {
+    return read();
+  }
+  // In the block's own expressions: `Gain.get() * 2.0` (C++ applies no conversion to the
+  // operand of an operator template, and the generic wrapper operators must not read it).
+  [[nodiscard]] T get()
+    requires(owner_get)
+  {
+    return read();
+  }
+  [[nodiscard]] T get() const
     requires(owner_get)
   {
     return read();
@@ -216,14 +284,35 @@ class property {
     return *this;
   }
 
-  T read() const {
+  static constexpr void check_readable() {
     static_assert(readable, "iecoop: the property has no Get accessor (it is write-only); it cannot be read");
     if constexpr (readable) {
       static_assert(std::is_convertible_v<std::invoke_result_t<decltype(Get), owner_type&>, T>,
                     "iecoop: a property's Get accessor returns the property's type; declare it `T Name_Get()`");
-      const T value = invoke_get();
+    }
+  }
+
+  T read() {
+    check_readable();
+    if constexpr (readable) {
+      const T value = (owner().*Get)();
       record(value);
       return value;
+    } else {
+      return T{};
+    }
+  }
+  // Reading through a const block: a const Get is called as such (and not recorded for
+  // monitoring); a non-const Get — the usual kind, as ST has no const — on the same block,
+  // which must then not be an object defined const (`const FB fb;` needs const accessors).
+  T read() const {
+    check_readable();
+    if constexpr (readable) {
+      if constexpr (std::is_invocable_v<decltype(Get), const owner_type&>) {
+        return (owner().*Get)();
+      } else {
+        return const_cast<property&>(*this).read();
+      }
     } else {
       return T{};
     }
@@ -241,19 +330,10 @@ class property {
 
   // The property is an empty member at offset 0 of its owner, so the owner lives at its
   // address (see docs/design.md, "Properties").
-  owner_type& owner() const noexcept {
-    return *std::launder(reinterpret_cast<owner_type*>(const_cast<property*>(this)));
-  }
+  owner_type& owner() noexcept { return *std::launder(reinterpret_cast<owner_type*>(this)); }
+  const owner_type& owner() const noexcept { return *std::launder(reinterpret_cast<const owner_type*>(this)); }
 
-  T invoke_get() const {
-    if constexpr (std::is_invocable_v<decltype(Get), const owner_type&>) {
-      return (static_cast<const owner_type&>(owner()).*Get)();
-    } else {
-      return (owner().*Get)();
-    }
-  }
-
-  void record(const T& value) const {
+  void record(const T& value) {
     if constexpr (!std::is_same_v<monitoring_mode, monitoring::call>) {
       shadow_ref() = value;
     }
@@ -262,7 +342,8 @@ class property {
   static constexpr auto shadow_member(monitoring::variable<Shadow>) {
     return Shadow;
   }
-  auto& shadow_ref() const { return owner().*shadow_member(monitoring_mode{}); }
+  auto& shadow_ref() { return owner().*shadow_member(monitoring_mode{}); }
+  const auto& shadow_ref() const { return owner().*shadow_member(monitoring_mode{}); }
 };
 
 namespace detail {

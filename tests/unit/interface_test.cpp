@@ -402,3 +402,79 @@ TEST_SUITE("INTERFACE") {
     CHECK(static_cast<void*>(&fb.Value) == static_cast<void*>(static_cast<I_Counter*>(&fb)));
   }
 }
+
+namespace diamond_test {
+using namespace iecoop;
+struct I_Root : interface_base<I_Root> {
+  virtual INT Id() = 0;
+};
+struct I_Left : interface_base<I_Left, I_Root> {
+  virtual INT Left() = 0;
+};
+// FUNCTION_BLOCK FB_Both IMPLEMENTS I_Root, I_Left  (I_Left EXTENDS I_Root)
+struct FB_Both : function_block<FB_Both, implements<I_Root, I_Left>> {
+  void body() {}
+  INT Id() override { return 1; }
+  INT Left() override { return 2; }
+};
+struct FB_Base : function_block<FB_Base, implements<I_Root>> {
+  virtual void body() {}
+  INT Id() override { return 10; }
+};
+// FUNCTION_BLOCK FB_Derived EXTENDS FB_Base IMPLEMENTS I_Left  (the base's interface, extended)
+struct FB_Derived : extends<FB_Derived, FB_Base, implements<I_Left>> {
+  INT Left() override { return 20; }
+};
+// FUNCTION_BLOCK FB_Again EXTENDS FB_Base IMPLEMENTS I_Root, I_Left  (repeated, as CODESYS allows)
+struct FB_Again : extends<FB_Again, FB_Base, implements<I_Root, I_Left>> {
+  INT Id() override { return 30; }
+  INT Left() override { return 31; }
+};
+}  // namespace diamond_test
+
+TEST_SUITE("INTERFACE: one interface reached along two ways") {
+  using diamond_test::FB_Again;
+  using diamond_test::FB_Base;
+  using diamond_test::FB_Both;
+  using diamond_test::FB_Derived;
+  using diamond_test::I_Left;
+  using diamond_test::I_Root;
+
+  TEST_CASE("a block implementing an interface and one that extends it holds it once") {
+    FB_Both both;
+    itf<I_Root> root = both;
+    itf<I_Left> left = both;
+    CHECK(root->Id() == 1);
+    CHECK(left->Id() == 1);
+    CHECK(left->Left() == 2);
+    CHECK(sizeof(FB_Both) <= 3 * sizeof(void*));  // vptrs only: no second I_Root
+  }
+
+  TEST_CASE("a derived block implements an extension of its base's interface") {
+    FB_Derived derived;
+    itf<I_Root> root = derived;
+    CHECK(root->Id() == 10);
+    itf<I_Left> left;
+    CHECK(query_interface(root, left) == TRUE);
+    CHECK(left->Left() == 20);
+    CHECK(left->Id() == 10);
+    CHECK(query_pointer<FB_Derived>(root) == &derived);
+    CHECK(query_pointer<FB_Base>(root) == &derived);
+  }
+
+  TEST_CASE("a derived block may list its base's interface again") {
+    FB_Again again;
+    itf<I_Root> root = again;
+    CHECK(root->Id() == 30);
+    itf<I_Left> left;
+    CHECK(query_interface(root, left) == TRUE);
+    CHECK(left->Left() == 31);
+  }
+
+  TEST_CASE("querying an interface variable into itself keeps it") {
+    FB_Both both;
+    itf<I_Root> root = both;
+    CHECK(query_interface(root, root) == TRUE);
+    CHECK(root == itf<I_Root>(both));
+  }
+}

@@ -3,6 +3,7 @@
 // FINAL properties, monitoring modes, properties of programs and GVLs, and zero cost.
 #include "iecoop_test.hpp"
 
+#include <memory>
 #include <sstream>
 #include <type_traits>
 
@@ -98,17 +99,50 @@ TEST_SUITE("PROPERTY") {
     CHECK(a.sets == 1);
   }
 
-  TEST_CASE("copying a block copies its variables and calls no accessor") {
+  TEST_CASE("a copy of a block calls no accessor; assigning a whole block assigns its properties") {
     FB_Tank a;
     a.Level = 12;
-    FB_Tank copy = a;
+    FB_Tank copy = a;  // a new instance: its variables copied, no accessor called
     CHECK(copy.iLevel == 12);
+    CHECK(copy.gets == 0);
+    CHECK(copy.sets == 1);  // the copied count
     FB_Tank b;
-    b = a;
-    CHECK(b.iLevel == 12);
-    CHECK(b.gets == a.gets);
-    CHECK(b.sets == a.sets);  // the copied counts, no new calls
-    CHECK(a.gets == 0);
+    b.iMax = 10;
+    b = a;  // ST: b := a; — the variables, then b.Level := a.Level (a's Get, b's Set)
+    CHECK(a.gets == 1);
+    CHECK(b.sets == a.sets + 1);
+    CHECK(b.iLevel == 12);  // iMax was copied (100) before Level's Set ran
+    // An online change copies without calling accessors.
+    alignas(FB_Tank) unsigned char storage[sizeof(FB_Tank)];
+    FB_Tank& moved = online_change(a, storage);
+    CHECK(moved.iLevel == 12);
+    CHECK(moved.gets == 1);
+    CHECK(moved.sets == 1);
+    std::destroy_at(&moved);
+    std::construct_at(&a);  // a's storage is used again by the test's own variable
+  }
+
+  TEST_CASE("inside the block, assigning from a const block's property calls its Get and this Set") {
+    struct FB_Copier : function_block<FB_Copier> {
+      INT iValue;
+      int sets = 0;
+      INT Value_Get() { return iValue; }  // not const, as ST accessors are
+      void Value_Set(INT value) {
+        ++sets;
+        iValue = value;
+      }
+      [[no_unique_address]] property<INT, &FB_Copier::Value_Get, &FB_Copier::Value_Set> Value;
+      void TakeFrom(const FB_Copier& other) { Value = other.Value; }
+      void body() {}
+    };
+    FB_Copier source;
+    source.Value = 7;
+    FB_Copier target;
+    target.TakeFrom(source);
+    CHECK(target.iValue == 7);
+    CHECK(target.sets == 1);
+    const FB_Copier& view = source;
+    CHECK(view.Value == 7);  // a non-const Get, read through a const reference
   }
 
   TEST_CASE("a property costs no bytes and lives at its block's address") {
@@ -237,6 +271,41 @@ TEST_SUITE("PROPERTY") {
     using count = decltype(FB_Counter::Count);
     static_assert(readable_as<count, DINT>);
     static_assert(!assignable<count, DINT>);  // Set is private (compile_fail/property_owner_only_set)
+  }
+
+  TEST_CASE("a PRIVATE Get: the block reads it in expressions, nobody else reads it") {
+    struct FB_Secret : function_block<FB_Secret> {
+      REAL rGain = REAL(2.5f);
+      REAL Gain_Get() const { return rGain; }
+      void Gain_Set(REAL value) { rGain = value; }
+      [[no_unique_address]] property<REAL, &FB_Secret::Gain_Get, &FB_Secret::Gain_Set, owner_only_get> Gain;
+      BOOL bHigh;
+      REAL rScaled;
+      void body() {
+        const REAL gain = Gain;        // reads as its value inside the block
+        bHigh = gain > REAL(2.0f);
+        rScaled = Gain.get() * REAL(4.0f);  // in an operator's operand: get()
+      }
+    };
+    FB_Secret secret;
+    secret();
+    CHECK(secret.bHigh == TRUE);
+    CHECK(secret.rScaled == REAL(10.0f));
+    secret.Gain = REAL(1.0f);  // Set is public
+    secret();
+    CHECK(secret.bHigh == FALSE);
+    using gain = decltype(FB_Secret::Gain);
+    static_assert(!readable_as<gain, REAL>);
+  }
+
+  TEST_CASE("a REAL property reads as a wider real, never as an integer") {
+    using ratio = decltype(FB_Tank::Ratio);
+    static_assert(std::is_convertible_v<ratio&, LREAL> && std::is_convertible_v<ratio&, double>);
+    static_assert(!std::is_convertible_v<ratio&, int> && !std::is_convertible_v<ratio&, long>);
+    FB_Tank tank;
+    tank.Level = 50;
+    const LREAL wide = tank.Ratio;
+    CHECK(wide == LREAL(0.5));
   }
 
   TEST_CASE("a PROTECTED property: derived blocks use it, others cannot see it") {

@@ -11,28 +11,31 @@
 #pragma once
 
 #include <type_traits>
+#include <utility>
 
 #include <iecoop/types.hpp>
 
 namespace iecoop::detail {
 
 /// A variable wrapper: a type that declares `using iecoop_value_wrapper = void;` and whose
-/// `get()` is its value.
+/// `get()` is its value. (A type may declare it as something else to opt out, as a property
+/// readable only by its block does.)
 template <class X>
-concept value_wrapper = requires { typename std::remove_cvref_t<X>::iecoop_value_wrapper; };
+concept value_wrapper = std::is_void_v<typename std::remove_cvref_t<X>::iecoop_value_wrapper>;
 
-/// An operand's value: a wrapper's get(), anything else itself.
+/// An operand's value: a wrapper's get(), anything else itself. The operand keeps its
+/// constness, so a property read through a non-const block calls its Get on that block.
 template <class X>
-constexpr decltype(auto) value_of(const X& x) {
+constexpr decltype(auto) value_of(X&& x) {
   if constexpr (value_wrapper<X>) {
-    return x.get();
+    return std::forward<X>(x).get();
   } else {
-    return (x);
+    return std::forward<X>(x);
   }
 }
 
 template <class X>
-using unwrapped_t = std::remove_cvref_t<decltype(value_of(std::declval<const X&>()))>;
+using unwrapped_t = std::remove_cvref_t<decltype(value_of(std::declval<X>()))>;
 
 template <class A, class B>
 concept wrapper_operands = value_wrapper<A> || value_wrapper<B>;
@@ -40,7 +43,8 @@ concept wrapper_operands = value_wrapper<A> || value_wrapper<B>;
 // A wrapped integer with a C++ number (`count + 1`) is left to the integer's own operators,
 // which check the constant while compiling (the wrapper converts to the integer for them).
 template <class X, class Y>
-concept wrapped_integer_with_number = value_wrapper<X> && AnyInteger<unwrapped_t<X>> && std::is_arithmetic_v<Y>;
+concept wrapped_integer_with_number =
+    value_wrapper<X> && AnyInteger<unwrapped_t<X>> && std::is_arithmetic_v<std::remove_cvref_t<Y>>;
 template <class A, class B>
 concept wrapper_arithmetic =
     wrapper_operands<A, B> && !wrapped_integer_with_number<A, B> && !wrapped_integer_with_number<B, A>;
@@ -55,56 +59,66 @@ using enable_for = std::enable_if_t<Enable, int>;
 namespace iecoop {
 
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator+(const A& a, const B& b) -> decltype(detail::value_of(a) + detail::value_of(b)) {
-  return detail::value_of(a) + detail::value_of(b);
+constexpr auto operator+(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) + detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) + detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator-(const A& a, const B& b) -> decltype(detail::value_of(a) - detail::value_of(b)) {
-  return detail::value_of(a) - detail::value_of(b);
+constexpr auto operator-(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) - detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) - detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator*(const A& a, const B& b) -> decltype(detail::value_of(a) * detail::value_of(b)) {
-  return detail::value_of(a) * detail::value_of(b);
+constexpr auto operator*(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) * detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) * detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator/(const A& a, const B& b) -> decltype(detail::value_of(a) / detail::value_of(b)) {
-  return detail::value_of(a) / detail::value_of(b);
+constexpr auto operator/(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) / detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) / detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator%(const A& a, const B& b) -> decltype(detail::value_of(a) % detail::value_of(b)) {
-  return detail::value_of(a) % detail::value_of(b);
+constexpr auto operator%(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) % detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) % detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator&(const A& a, const B& b) -> decltype(detail::value_of(a) & detail::value_of(b)) {
-  return detail::value_of(a) & detail::value_of(b);
+constexpr auto operator&(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) & detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) & detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator|(const A& a, const B& b) -> decltype(detail::value_of(a) | detail::value_of(b)) {
-  return detail::value_of(a) | detail::value_of(b);
+constexpr auto operator|(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) | detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) | detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_arithmetic<A, B>> = 0>
-constexpr auto operator^(const A& a, const B& b) -> decltype(detail::value_of(a) ^ detail::value_of(b)) {
-  return detail::value_of(a) ^ detail::value_of(b);
+constexpr auto operator^(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) ^ detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) ^ detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
-constexpr auto operator==(const A& a, const B& b) -> decltype(detail::value_of(a) == detail::value_of(b)) {
-  return detail::value_of(a) == detail::value_of(b);
+constexpr auto operator==(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) == detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) == detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
-constexpr auto operator<=>(const A& a, const B& b) -> decltype(detail::value_of(a) <=> detail::value_of(b)) {
-  return detail::value_of(a) <=> detail::value_of(b);
+constexpr auto operator<=>(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) <=> detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) <=> detail::value_of(std::forward<B>(b));
 }
 template <class A, detail::enable_for<detail::value_wrapper<A>> = 0>
-constexpr auto operator-(const A& a) -> decltype(-detail::value_of(a)) {
-  return -detail::value_of(a);
+constexpr auto operator-(A&& a) -> decltype(-detail::value_of(std::forward<A>(a))) {
+  return -detail::value_of(std::forward<A>(a));
 }
 template <class A, detail::enable_for<detail::value_wrapper<A>> = 0>
-constexpr auto operator!(const A& a) -> decltype(!detail::value_of(a)) {
-  return !detail::value_of(a);
+constexpr auto operator!(A&& a) -> decltype(!detail::value_of(std::forward<A>(a))) {
+  return !detail::value_of(std::forward<A>(a));
 }
 template <class A, detail::enable_for<detail::value_wrapper<A>> = 0>
-constexpr auto operator~(const A& a) -> decltype(~detail::value_of(a)) {
-  return ~detail::value_of(a);
+constexpr auto operator~(A&& a) -> decltype(~detail::value_of(std::forward<A>(a))) {
+  return ~detail::value_of(std::forward<A>(a));
 }
 
 }  // namespace iecoop
