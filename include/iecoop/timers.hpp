@@ -45,6 +45,19 @@ concept timer_time = std::is_same_v<Time, TIME> || std::is_same_v<Time, LTIME>;
 /// MatIEC's STATE: 0 reset, 1 counting, 2 expired.
 enum class timer_state : std::uint8_t { idle, running, expired };
 
+/// One call of a running timer (MatIEC's STATE = 1): it has expired once the time elapsed
+/// since `start` reaches PT, and ET is then PT; otherwise ET is the elapsed time.
+template <class Time>
+struct timer_progress {
+  bool expired;
+  Time et;
+};
+template <class Time>
+timer_progress<Time> run_timer(Time start, Time pt) noexcept {
+  const Time elapsed = cycle_clock::now_as<Time>() - start;
+  return elapsed >= pt ? timer_progress<Time>{true, pt} : timer_progress<Time>{false, elapsed};
+}
+
 template <class Time>
 constexpr bool check_timer_time() {
   static_assert(timer_time<Time>, "iecoop: a timer measures TIME or LTIME; use TON/TOF/TP (TIME) or LTON/LTOF/LTP (LTIME)");
@@ -96,13 +109,11 @@ class on_delay_timer : public function_block<on_delay_timer<Time>> {
       Q = FALSE;
       start_ = cycle_clock::now_as<Time>();
     } else if (state_ == timer_state::running) {
-      const Time elapsed = cycle_clock::now_as<Time>() - start_;
-      if (elapsed >= PT) {
+      const auto progress = detail::run_timer(start_, PT);
+      ET = progress.et;
+      if (progress.expired) {
         state_ = timer_state::expired;
         Q = TRUE;
-        ET = PT;
-      } else {
-        ET = elapsed;
       }
     }
   }
@@ -149,13 +160,9 @@ class off_delay_timer : public function_block<off_delay_timer<Time>> {
         start_ = cycle_clock::now_as<Time>();
       }
     } else if (state_ == timer_state::running) {
-      const Time elapsed = cycle_clock::now_as<Time>() - start_;
-      if (elapsed >= PT) {
-        state_ = timer_state::expired;
-        ET = PT;
-      } else {
-        ET = elapsed;
-      }
+      const auto progress = detail::run_timer(start_, PT);
+      ET = progress.et;
+      if (progress.expired) state_ = timer_state::expired;
     }
     Q = IN || state_ == timer_state::running;
     prev_in_ = static_cast<bool>(IN);
@@ -202,13 +209,11 @@ class pulse_timer : public function_block<pulse_timer<Time>> {
         start_ = cycle_clock::now_as<Time>();
       }
     } else if (state_ == timer_state::running) {
-      const Time elapsed = cycle_clock::now_as<Time>() - start_;
-      if (elapsed >= PT) {
+      const auto progress = detail::run_timer(start_, PT);
+      ET = progress.et;
+      if (progress.expired) {
         state_ = timer_state::expired;
         Q = FALSE;
-        ET = PT;
-      } else {
-        ET = elapsed;
       }
     }
     if (state_ == timer_state::expired && !IN) {
