@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // iecoop/iecoop.hpp — everything iecoop offers, in one include. (The optional integrations
 // <iecoop/fmt.hpp> and <iecoop/ostream.hpp> are not included: they pull in fmt and
-// <ostream>, which the core never needs.)
+// <ostream>, which the core never needs; nor is the POSIX real-time runner
+// <iecoop/realtime.hpp>.)
 #pragma once
 
 // IWYU pragma: begin_exports
 #include <iecoop/access.hpp>
+#include <iecoop/address.hpp>
 #include <iecoop/bistables.hpp>
 #include <iecoop/config.hpp>
 #include <iecoop/conversions.hpp>
@@ -18,11 +20,13 @@
 #include <iecoop/fault.hpp>
 #include <iecoop/function_block.hpp>
 #include <iecoop/interface.hpp>
+#include <iecoop/io.hpp>
 #include <iecoop/lifecycle.hpp>
 #include <iecoop/literals.hpp>
 #include <iecoop/method.hpp>
 #include <iecoop/named.hpp>
 #include <iecoop/pins.hpp>
+#include <iecoop/process_image.hpp>
 #include <iecoop/program.hpp>
 #include <iecoop/property.hpp>
 #include <iecoop/reflect.hpp>
