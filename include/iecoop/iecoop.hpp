@@ -18,6 +18,7 @@
 #include <iecoop/edges.hpp>
 #include <iecoop/extends.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/file_storage.hpp>
 #include <iecoop/function_block.hpp>
 #include <iecoop/interface.hpp>
 #include <iecoop/io.hpp>
@@ -30,6 +31,7 @@
 #include <iecoop/program.hpp>
 #include <iecoop/property.hpp>
 #include <iecoop/reflect.hpp>
+#include <iecoop/retain.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/string_functions.hpp>
 #include <iecoop/text.hpp>

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// iecoop/detail/type_hash.hpp — a 32-bit FNV-1a hash, and a type's hash computed from its
+// name at compile time, without RTTI: what RETAIN and PERSISTENT images record so that a
+// retyped variable (INT -> UINT) is recognised.
+// IWYU pragma: private, include <iecoop/retain.hpp>
+//
+// The IEC elementary types, STRING(n), WSTRING(n) and arrays of them are hashed under their
+// IEC names ("INT", "STRING(10)", "ARRAY[3] OF INT"), which every compiler and platform
+// spells alike. Any other type is hashed under the compiler's spelling of its name, read from
+// __PRETTY_FUNCTION__ as reflect.hpp reads names: "app::ST_Recipe" for a user STRUCT.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+
+#include <iecoop/config.hpp>
+#include <iecoop/string.hpp>
+#include <iecoop/time.hpp>
+#include <iecoop/types.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop::detail {
+
+/// FNV-1a, 32 bits: small, constexpr, and the same on every platform (numbers are fed as
+/// their little-endian bytes).
+class fnv1a {
+ public:
+  constexpr fnv1a& add_byte(std::uint8_t byte) noexcept {
+    hash_ = (hash_ ^ byte) * 16777619U;
+    return *this;
+  }
+  constexpr fnv1a& add(std::string_view text) noexcept {
+    for (const char c : text) add_byte(static_cast<std::uint8_t>(c));
+    return *this;
+  }
+  /// `value` as 8 little-endian bytes.
+  constexpr fnv1a& add_number(std::uint64_t value) noexcept {
+    for (int i = 0; i < 8; ++i) {
+      add_byte(static_cast<std::uint8_t>(value & 0xFFU));
+      value >>= 8U;
+    }
+    return *this;
+  }
+  /// `value` in decimal digits, as it is spelled in a type name.
+  constexpr fnv1a& add_decimal(std::uint64_t value) noexcept {
+    char digits[20]{};
+    int n = 0;
+    do {
+      digits[n++] = static_cast<char>('0' + value % 10U);
+      value /= 10U;
+    } while (value != 0);
+    while (n > 0) add_byte(static_cast<std::uint8_t>(digits[--n]));
+    return *this;
+  }
+  [[nodiscard]] constexpr std::uint32_t value() const noexcept { return hash_; }
+
+ private:
+  std::uint32_t hash_ = 2166136261U;
+};
+
+template <class T>
+constexpr std::string_view type_signature() noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+  return __PRETTY_FUNCTION__;
+#else
+#  error "iecoop: type names need GCC or Clang (__PRETTY_FUNCTION__)"
+#endif
+}
+
+/// The compiler's spelling of T, cut out of "... [with T = <name>; ...]" (GCC) or
+/// "... [T = <name>]" (Clang).
+template <class T>
+constexpr std::string_view type_name() noexcept {
+  constexpr std::string_view signature = type_signature<T>();
+  constexpr std::size_t start = signature.find("T = ") + 4;
+  constexpr std::size_t semicolon = signature.find(';', start);
+  constexpr std::size_t end = semicolon != std::string_view::npos ? semicolon : signature.rfind(']');
+  return signature.substr(start, end - start);
+}
+
+template <class T>
+struct is_std_array : std::false_type {};
+template <class T, std::size_t N>
+struct is_std_array<std::array<T, N>> : std::true_type {};
+
+template <class T>
+struct iec_string_traits {
+  static constexpr bool value = false;
+};
+template <class C, std::size_t N>
+struct iec_string_traits<iec_string<C, N>> {
+  static constexpr bool value = true;
+  static constexpr bool wide = !std::is_same_v<C, char>;
+  static constexpr std::size_t capacity = N;
+};
+
+/// Feeds T's name to `hash`: the IEC name where T has one, else the compiler's spelling.
+template <class T>
+constexpr void add_type_name(fnv1a& hash) noexcept {
+  using U = std::remove_cv_t<T>;
+  if constexpr (std::is_same_v<U, BOOL>) {
+    hash.add("BOOL");
+  } else if constexpr (is_integer<U>::value) {
+    constexpr std::string_view names[3][4] = {{"SINT", "INT", "DINT", "LINT"},
+                                              {"USINT", "UINT", "UDINT", "ULINT"},
+                                              {"BYTE", "WORD", "DWORD", "LWORD"}};
+    constexpr std::size_t family = U::kind == integer_kind::signed_int     ? 0
+                                   : U::kind == integer_kind::unsigned_int ? 1
+                                                                           : 2;
+    constexpr std::size_t width = sizeof(U) == 1 ? 0 : sizeof(U) == 2 ? 1 : sizeof(U) == 4 ? 2 : 3;
+    hash.add(names[family][width]);
+  } else if constexpr (std::is_same_v<U, REAL>) {
+    hash.add("REAL");
+  } else if constexpr (std::is_same_v<U, LREAL>) {
+    hash.add("LREAL");
+  } else if constexpr (std::is_same_v<U, TIME>) {
+    hash.add("TIME");
+  } else if constexpr (std::is_same_v<U, LTIME>) {
+    hash.add("LTIME");
+  } else if constexpr (iec_string_traits<U>::value) {
+    hash.add(iec_string_traits<U>::wide ? "WSTRING(" : "STRING(").add_decimal(iec_string_traits<U>::capacity).add(")");
+  } else if constexpr (std::is_array_v<U>) {
+    hash.add("ARRAY[").add_decimal(std::extent_v<U>).add("] OF ");
+    add_type_name<std::remove_extent_t<U>>(hash);
+  } else if constexpr (is_std_array<U>::value) {
+    hash.add("ARRAY[").add_decimal(std::tuple_size_v<U>).add("] OF ");
+    add_type_name<typename U::value_type>(hash);
+  } else {
+    hash.add(type_name<U>());
+  }
+}
+
+/// T's 32-bit hash.
+template <class T>
+inline constexpr std::uint32_t type_hash = [] {
+  fnv1a hash;
+  add_type_name<T>(hash);
+  return hash.value();
+}();
+
+}  // namespace iecoop::detail
+
+#include <iecoop/detail/pop_macros.hpp>
