@@ -8,6 +8,7 @@
 // IWYU pragma: begin_exports
 #include <iecoop/access.hpp>
 #include <iecoop/address.hpp>
+#include <iecoop/application.hpp>
 #include <iecoop/bistables.hpp>
 #include <iecoop/config.hpp>
 #include <iecoop/conversions.hpp>
@@ -34,6 +35,7 @@
 #include <iecoop/retain.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/string_functions.hpp>
+#include <iecoop/task.hpp>
 #include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
 #include <iecoop/timers.hpp>

@@ -1,0 +1,19 @@
+// EXPECT: iecoop: a task calls the same program twice
+#include <iecoop/task.hpp>
+#include <iecoop/literals.hpp>
+
+using namespace iecoop;
+struct PLC_PRG : program<PLC_PRG> {
+  void body() {}
+};
+struct IO_PRG : program<IO_PRG> {
+  void body() {}
+};
+int main() {
+#ifdef IECOOP_COMPILE_FAIL
+  const task<PLC_PRG, IO_PRG, PLC_PRG> main_task{"Main", cyclic{"T#10ms"_iec}, 1};
+#else
+  const task<PLC_PRG, IO_PRG> main_task{"Main", cyclic{"T#10ms"_iec}, 1};
+#endif
+  return main_task.settings().priority == 1 ? 0 : 1;
+}
