@@ -4,7 +4,13 @@
 // whoever calls it."
 //
 // The seed describes the call without code; this is the obvious program: PRG_Counter adds
-// its input to a running total, and PLC_PRG calls it with := and =>.
+// its input to a running total, and PLC_PRG calls it with := and =>. The last test runs
+// PLC_PRG under a cyclic task, as a controller does:
+//
+//     TASK MainTask (INTERVAL := T#10ms, PRIORITY := 1);
+//     PROGRAM Main WITH MainTask : PLC_PRG;
+//
+// PRG_Counter is in no task: only PLC_PRG calls it, so it is an ordinary variable.
 #include <doctest/doctest.h>
 
 #include <iecoop/iecoop.hpp>
@@ -90,5 +96,22 @@ TEST_SUITE("seed: PROGRAM called with := and =>") {
       CHECK(&PRG_Counter::instance() == &first);
     }
     CHECK(PRG_Counter::exists());
+  }
+
+  TEST_CASE("under a task: PLC_PRG calls PRG_Counter each cycle with := and =>") {
+    PRG_Counter counter;  // the one instance of the program that only PLC_PRG calls
+    application plc{task<PLC_PRG>{"MainTask", cyclic{"T#10ms"_iec}, 1}};
+    plc.start();
+    plc.run_for("T#30ms"_iec);  // cycles at 0, 10 and 20 ms
+    CHECK(plc.task("MainTask").statistics().cycles == 3);
+    CHECK(counter.iCalls == 3);
+    CHECK(PLC_PRG::instance().iResult == 15);
+    // Another POU's calls in between change the program's values (0, then 0 + 5: iStep keeps
+    // its value); the next cycle goes on from them.
+    PRG_Counter::instance()("bReset"_ = TRUE);
+    PRG_Counter::instance()("bReset"_ = FALSE);
+    plc.run_for("T#10ms"_iec);
+    CHECK(PLC_PRG::instance().iResult == 10);
+    CHECK(counter.iCalls == 6);
   }
 }

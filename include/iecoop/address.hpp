@@ -8,6 +8,7 @@
 //        area        size (none = bit)
 //
 //     address_of<"%IX0.5">   // input, bit 5 of byte 0  (also "%I0.5")
+//     address_of<"%IX75">    // input bit 75 (IEC's flat bit number): bit 3 of byte 9
 //     address_of<"%QB7">     // output byte 7
 //     address_of<"%IW2">     // input word 2: bytes 4..5 in CODESYS addressing
 //     address_of<"%MD48">    // memory double word 48: bytes 192..195 (CODESYS) or 48..51 (byte_offset)
@@ -39,7 +40,7 @@ enum class io_area : std::uint8_t {
 
 /// The size of the value at an address.
 enum class io_width : std::uint8_t {
-  bit,    ///< X, or no size letter: one bit, %IX<byte>.<bit>
+  bit,    ///< X, or no size letter: one bit, %IX<byte>.<bit> or %IX<bit number>
   byte,   ///< B: 8 bits
   word,   ///< W: 16 bits
   dword,  ///< D: 32 bits
@@ -109,7 +110,6 @@ enum class address_error {
   bad_size,             ///< "%IZ0"
   expected_number,      ///< "%IX", "%IX0."
   number_too_large,     ///< more than 268435455
-  missing_bit,          ///< "%IX5": a bit address needs its bit
   bit_on_wide_address,  ///< "%IB2.4"
   bit_out_of_range,     ///< "%IX0.8"
   hierarchical,         ///< "%IW2.5.7.1"
@@ -193,8 +193,9 @@ constexpr address_parse parse_address(std::string_view text) noexcept {
     if (bit > 7) return fail(address_error::bit_out_of_range);
     a.bit = static_cast<std::uint8_t>(bit);
   } else if (a.width == io_width::bit) {
-    if (i < text.size() && text[i] != '.') return fail(address_error::trailing_characters);
-    return fail(address_error::missing_bit);
+    // No byte.bit: IEC's flat bit number, %IX75 = bit 75 of the area = bit 3 of byte 9.
+    a.bit = static_cast<std::uint8_t>(a.number % 8U);
+    a.number /= 8U;
   }
   if (i != text.size()) return fail(address_error::trailing_characters);
   return address_parse{a, address_error::none};
@@ -212,7 +213,6 @@ consteval void check_address() noexcept {
   static_assert(E != address_error::bad_size, "iecoop: unknown size letter in the direct address; the sizes are X (bit), B (byte), W (word), D (double word) and L (long word)");
   static_assert(E != address_error::expected_number, "iecoop: a number is missing in the direct address; write e.g. \"%IW2\" or \"%IX0.5\"");
   static_assert(E != address_error::number_too_large, "iecoop: the number of the direct address is too large (at most 268435455); use a smaller address");
-  static_assert(E != address_error::missing_bit, "iecoop: a bit address needs its byte and bit, %IX<byte>.<bit>; write e.g. \"%IX5.0\", or \"%IB5\" for the whole byte");
   static_assert(E != address_error::bit_on_wide_address, "iecoop: only bit addresses (%IX, or %I without size) take a bit number; write \"%IX2.4\" for bit 4 of byte 2, or read the byte or word through the process image");
   static_assert(E != address_error::bit_out_of_range, "iecoop: the bit number of a direct address is 0..7 (a byte has 8 bits); %IX0.8 is written %IX1.0");
   static_assert(E != address_error::hierarchical, "iecoop: hierarchical addresses (%IW2.5.7.1) depend on a fieldbus configuration iecoop does not have; write a flat address such as \"%IW2\"");

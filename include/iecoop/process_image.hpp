@@ -477,6 +477,16 @@ class located {
   }
 };
 
+/**
+ * A directly represented variable used as it stands in ST: `%IX5` in an expression is
+ * `at<"%IX5">`, `%QX1.0 := TRUE;` is `at<"%QX1.0"> = TRUE;`. Its type follows the size:
+ * BOOL (X), BYTE, WORD, DWORD, LWORD; use located<T, "..."> for another type.
+ *
+ *     CMD_TMR("IN"_ = at<"%IX5">, "PT"_ = 300);   // ST: CMD_TMR(IN := %IX5, PT := 300);
+ */
+template <detail::fixed_string Address, class Image = default_process_image>
+inline located<detail::default_type_t<address_of<Address>.width>, Address, Image> at{};
+
 // ---------------------------------------------------------------------------------------
 // The overlap check of a set of located variables
 

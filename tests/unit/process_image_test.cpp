@@ -81,8 +81,11 @@ static_assert(error_of("%IZ0") == address_error::bad_size);
 static_assert(error_of("%IX") == address_error::expected_number);
 static_assert(error_of("%IX0.") == address_error::expected_number);
 static_assert(error_of("%I-1") == address_error::expected_number);
-static_assert(error_of("%IX5") == address_error::missing_bit);
-static_assert(error_of("%I5") == address_error::missing_bit);
+// Without byte.bit, a bit address is IEC's flat bit number: %IX5 = bit 5 of byte 0.
+static_assert(address_of<"%IX5"> == io_address{io_area::input, io_width::bit, 0, 5});
+static_assert(address_of<"%I5"> == address_of<"%IX0.5">);
+static_assert(address_of<"%QX75"> == address_of<"%QX9.3">);
+static_assert(address_of<"%MX8"> == address_of<"%MX1.0">);
 static_assert(error_of("%IB2.4") == address_error::bit_on_wide_address);
 static_assert(error_of("%IW2.5.7.1") == address_error::hierarchical);
 static_assert(error_of("%IX2.5.7") == address_error::hierarchical);
@@ -332,6 +335,22 @@ TEST_SUITE("process image") {
 }
 
 TEST_SUITE("located variables") {
+  TEST_CASE("at<\"%...\"> is a directly represented variable: %IX5 in an expression, %QX1.0 := TRUE") {
+    io_image::clear();
+    io_image::write<BYTE, "%IB0">(BYTE(0x20));
+    CHECK(static_cast<bool>(at<"%IX5", io_image>));        // IEC's flat bit 5: bit 5 of byte 0
+    CHECK_FALSE(static_cast<bool>(at<"%IX4", io_image>));
+    at<"%QX1.0", io_image> = TRUE;                         // %QX1.0 := TRUE;
+    CHECK(io_image::read<BYTE, "%QB1">() == 1);
+    at<"%MW2", io_image> = WORD(0x1234);                   // %MW2 := 16#1234; (a WORD: the size's type)
+    CHECK(io_image::read<BYTE, "%MB4">() == 0x34);
+    const WORD w = at<"%MW2", io_image>;
+    CHECK(w == 0x1234);
+    static_assert(std::is_same_v<decltype(at<"%ID1", io_image>)::value_type, DWORD>);
+    static_assert(std::is_same_v<decltype(at<"%QL0", io_image>)::value_type, LWORD>);
+    io_image::clear();
+  }
+
   TEST_CASE("reading inputs and writing outputs of every size") {
     io_image::clear();
     GVL_IO io;
