@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: MIT
+// iecoop/realtime.hpp — runs an application against the steady clock: the same tasks, the
+// same programs, the same statistics as in simulation, but each task sleeps until it is due
+// and its cycle time is measured, not modelled.
+//
+//     std::atomic<bool> stop_requested{false};      // set from a SIGINT handler, say
+//     plc.start();
+//     iecoop::realtime_runner runner{plc, {.fifo = true}};
+//     runner.run(stop_requested);                  // returns when asked to stop
+//     plc.task("Fast").statistics().max_jitter;    // measured
+//
+// All tasks run in the calling thread, one cycle at a time: when several are due, the highest
+// priority goes first, and a cycle that is under way finishes before another starts (there
+// is no preemption, so blocks and globals need no locks; a long low-priority cycle delays a
+// high-priority one, which shows in its jitter). With `fifo`, the thread asks for
+// SCHED_FIFO scheduling for the duration of run() (and, with `lock_memory`, locks the
+// process's memory); without the privilege it runs as an ordinary thread (fifo_active()
+// tells). For Linux and other POSIX systems; not part of <iecoop/iecoop.hpp>.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <thread>
+
+#include <iecoop/application.hpp>
+#include <iecoop/config.hpp>
+#include <iecoop/time.hpp>
+
+#if defined(__linux__)
+#  include <sched.h>
+#  include <sys/mman.h>
+#  include <time.h>
+#endif
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/// How a realtime_runner runs.
+struct realtime_options {
+  bool fifo = false;           ///< ask for SCHED_FIFO at fifo_priority while run() runs
+  int fifo_priority = 50;      ///< 1..99 (Linux)
+  bool lock_memory = false;    ///< with fifo granted: mlockall, so that no page fault delays a cycle
+  LTIME event_poll{1000000};   ///< how often event conditions are sampled when nothing else is due (1 ms)
+  LTIME max_sleep{50000000};   ///< the longest sleep, so that a stop request is seen within it (50 ms)
+};
+
+/// Why realtime_runner::run returned.
+enum class run_end : std::uint8_t {
+  stop_requested,  ///< the stop flag was set
+  time_elapsed,    ///< the duration given to run() has passed
+  not_running,     ///< the application was not running, or a watchdog fault stopped it
+};
+
+/**
+ * Runs an application's tasks in real time, in the calling thread. The application's clock
+ * continues from where it was (simulated time before, if any), so now() keeps counting.
+ */
+template <class App>
+class realtime_runner {
+ public:
+  explicit realtime_runner(App& app, realtime_options options = {}) noexcept : app_(app), options_(options) {}
+
+  /// Runs until `stop` is set, `duration` has passed or the application stops running.
+  run_end run(const std::atomic<bool>& stop, LTIME duration = LTIME::max()) {
+    const scheduling_scope scheduling(*this);
+    return run_cycles(stop, duration);
+  }
+
+  /// TRUE if the last run() ran under SCHED_FIFO (asked for with options.fifo, and permitted).
+  [[nodiscard]] bool fifo_active() const noexcept { return fifo_active_; }
+
+ private:
+  // SCHED_FIFO for the duration of run(), if asked for and permitted; the thread's previous
+  // policy is restored afterwards.
+  class scheduling_scope {
+   public:
+    explicit scheduling_scope(realtime_runner& runner) noexcept : runner_(runner) {
+      runner_.fifo_active_ = false;
+#if defined(__linux__)
+      if (!runner_.options_.fifo) return;
+      policy_ = sched_getscheduler(0);
+      if (policy_ < 0 || sched_getparam(0, &previous_) != 0) return;
+      sched_param param{};
+      param.sched_priority = runner_.options_.fifo_priority;
+      runner_.fifo_active_ = sched_setscheduler(0, SCHED_FIFO, &param) == 0;
+      if (runner_.fifo_active_ && runner_.options_.lock_memory) (void)mlockall(MCL_CURRENT | MCL_FUTURE);
+#endif
+    }
+    ~scheduling_scope() {
+#if defined(__linux__)
+      if (runner_.fifo_active_) (void)sched_setscheduler(0, policy_, &previous_);
+#endif
+    }
+    scheduling_scope(const scheduling_scope&) = delete;
+    scheduling_scope& operator=(const scheduling_scope&) = delete;
+
+   private:
+    realtime_runner& runner_;
+#if defined(__linux__)
+    int policy_ = SCHED_OTHER;
+    sched_param previous_{};
+#endif
+  };
+
+  run_end run_cycles(const std::atomic<bool>& stop, LTIME duration) {
+    const auto origin = std::chrono::steady_clock::now();
+    const LTIME base = app_.now_;
+    const LTIME deadline = duration > LTIME::max() - base ? LTIME::max() : base + duration;
+    const auto clock = [&] {
+      const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - origin);
+      return base + LTIME::from_ticks(static_cast<std::uint64_t>(elapsed.count()));
+    };
+    bool has_event_task = false;
+    for (const task_state& t : app_.tasks_) has_event_task = has_event_task || t.settings_.kind == task_kind::event;
+
+    for (;;) {
+      if (stop.load(std::memory_order_relaxed)) return run_end::stop_requested;
+      if (app_.state_ != application_state::running) return run_end::not_running;
+      LTIME now = clock();
+      if (now >= deadline) {
+        app_.now_ = deadline > app_.now_ ? deadline : app_.now_;
+        return run_end::time_elapsed;
+      }
+      app_.now_ = now;
+      app_.release_due(now);
+      for (std::size_t next = app_.pick(); next != App::no_task && app_.state_ == application_state::running; next = app_.pick()) {
+        const LTIME start = clock();
+        app_.now_ = start;
+        app_.begin_cycle(next, start);
+        const LTIME end = clock();
+        app_.now_ = end;
+        app_.end_cycle(next, end);
+        if (app_.state_ != application_state::running) break;
+        app_.release_due(end);
+      }
+      now = clock();
+      LTIME wake = app_.next_release();
+      if (has_event_task && now + options_.event_poll < wake) wake = now + options_.event_poll;
+      if (now + options_.max_sleep < wake) wake = now + options_.max_sleep;
+      if (deadline < wake) wake = deadline;
+      if (wake > now) sleep_until(origin + std::chrono::nanoseconds(static_cast<std::int64_t>((wake - base).count())));
+    }
+  }
+
+  static void sleep_until(std::chrono::steady_clock::time_point when) {
+#if defined(__linux__)
+    // libstdc++'s steady_clock is CLOCK_MONOTONIC: sleep to the absolute instant, so that
+    // the time spent computing the sleep does not add up.
+    const auto since_epoch = std::chrono::duration_cast<std::chrono::nanoseconds>(when.time_since_epoch()).count();
+    timespec ts{};
+    ts.tv_sec = static_cast<time_t>(since_epoch / 1000000000);
+    ts.tv_nsec = static_cast<long>(since_epoch % 1000000000);
+    // A signal interrupts the sleep (EINTR): run() then looks at the stop flag and sleeps again.
+    (void)clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
+#else
+    std::this_thread::sleep_until(when);
+#endif
+  }
+
+  App& app_;
+  realtime_options options_;
+  bool fifo_active_ = false;
+};
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>

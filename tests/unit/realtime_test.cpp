@@ -1,0 +1,105 @@
+// The real-time runner, briefly and with loose bounds: the machines that run these tests are
+// shared and noisy, so only what must hold on any of them is asserted (speed and jitter
+// figures belong to bench/).
+#include "iecoop_test.hpp"
+
+#include <iecoop/realtime.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+using namespace iecoop;
+
+namespace {
+
+struct TICK_PRG : program<TICK_PRG> {
+  var<UDINT> nCalls;
+  LTIME first{};
+  LTIME last{};
+  void body() {
+    if (nCalls == 0U) first = cycle_clock::now();
+    last = cycle_clock::now();
+    nCalls = nCalls + 1U;
+  }
+};
+
+BOOL bRealtimeEvent;
+struct EVENT_PRG : program<EVENT_PRG> {
+  var<UDINT> nRuns;
+  void body() { nRuns = nRuns + 1U; }
+};
+
+}  // namespace
+
+TEST_SUITE("realtime runner") {
+  TEST_CASE("a 2 ms task runs against the steady clock for the time asked") {
+    application plc{task<TICK_PRG>{"Tick", cyclic{"T#2ms"_iec}, 0}};
+    plc.start();
+    std::atomic<bool> stop{false};
+    realtime_runner runner{plc};
+    const auto wall_start = std::chrono::steady_clock::now();
+    CHECK(runner.run(stop, "T#200ms"_iec) == run_end::time_elapsed);
+    const auto wall = std::chrono::steady_clock::now() - wall_start;
+    CHECK(wall >= std::chrono::milliseconds(200));
+    CHECK(wall < std::chrono::seconds(5));
+    CHECK(plc.now() == LTIME("T#200ms"_iec));
+    const task_statistics& s = plc.task(0).statistics();
+    // 100 releases in 200 ms; a loaded machine may omit some, none may run twice.
+    CHECK(s.cycles >= 20);
+    CHECK(s.cycles <= 100);
+    CHECK(s.cycles + s.overruns <= 101);
+    CHECK(TICK_PRG::instance().nCalls == s.cycles);
+    CHECK(TICK_PRG::instance().last > TICK_PRG::instance().first);
+    CHECK(s.max_jitter >= s.min_jitter);
+    CHECK(s.max_cycle_time >= s.min_cycle_time);
+    CHECK_FALSE(runner.fifo_active());
+  }
+
+  TEST_CASE("a stop request ends the run; the clock continues from the simulated time") {
+    application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
+    plc.start();
+    plc.run_for("T#1s"_iec);  // simulated first
+    CHECK(TICK_PRG::instance().nCalls == 200U);
+    std::atomic<bool> stop{false};
+    std::thread stopper([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      stop = true;
+    });
+    realtime_runner runner{plc};
+    CHECK(runner.run(stop) == run_end::stop_requested);
+    stopper.join();
+    CHECK(plc.now() > LTIME("T#1s"_iec));
+    CHECK(TICK_PRG::instance().nCalls > 200U);
+  }
+
+  TEST_CASE("an application that is not running ends the run at once") {
+    application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
+    std::atomic<bool> stop{false};
+    realtime_runner runner{plc};
+    CHECK(runner.run(stop, "T#1s"_iec) == run_end::not_running);
+  }
+
+  TEST_CASE("event tasks are polled in real time") {
+    bRealtimeEvent = FALSE;
+    application plc{task<TICK_PRG>{"Tick", cyclic{"T#50ms"_iec}, 1}, task<EVENT_PRG>{"Event", event{bRealtimeEvent}, 0}};
+    plc.start();
+    std::atomic<bool> stop{false};
+    realtime_runner runner{plc};
+    CHECK(runner.run(stop, "T#20ms"_iec) == run_end::time_elapsed);
+    CHECK(EVENT_PRG::instance().nRuns == 0U);
+    bRealtimeEvent = TRUE;
+    CHECK(runner.run(stop, "T#20ms"_iec) == run_end::time_elapsed);
+    CHECK(EVENT_PRG::instance().nRuns == 1U);
+    bRealtimeEvent = FALSE;
+  }
+
+  TEST_CASE("asking for SCHED_FIFO without the privilege runs all the same") {
+    application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
+    plc.start();
+    std::atomic<bool> stop{false};
+    realtime_runner runner{plc, realtime_options{.fifo = true, .fifo_priority = 10}};
+    CHECK(runner.run(stop, "T#20ms"_iec) == run_end::time_elapsed);
+    CHECK(TICK_PRG::instance().nCalls >= 1U);  // fifo_active() depends on the machine's rights
+  }
+}
