@@ -346,6 +346,7 @@ class application {
           if constexpr (detail::entry<Entries>::is_task) tasks_[i++].settings_ = entries.settings();
         }(),
         ...);
+    for (const task_state& t : tasks_) has_event_tasks_ = has_event_tasks_ || t.settings_.kind == task_kind::event;
   }
   application(const application&) = delete;
   application& operator=(const application&) = delete;
@@ -684,6 +685,7 @@ class application {
   }
 
   void sample_events(LTIME now) {
+    if (!has_event_tasks_) return;
     for (task_state& t : tasks_) {
       if (t.settings_.kind != task_kind::event) continue;
       const bool value = static_cast<bool>(t.settings_.trigger.read());
@@ -794,6 +796,7 @@ class application {
   std::size_t running_ = no_task;
   const task_state* faulted_task_ = nullptr;
   unsigned freewheeling_load_ = 80;
+  bool has_event_tasks_ = false;
   application_state state_ = application_state::stopped;
 };
 
