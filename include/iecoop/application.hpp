@@ -137,6 +137,7 @@ class task_state {
   LTIME start_time_{};
   LTIME remaining_{};  // simulated processor time the running cycle still needs
   std::uint64_t cycle_number_ = 0;
+  std::uint32_t watchdog_streak_ = 0;  // watchdog overruns in a row
   bool released_ = false;
   bool active_ = false;
   bool event_previous_ = false;
@@ -307,6 +308,10 @@ struct located_check<Image, type_list<Objects...>> {
 template <class... Entries>
 class application {
   static constexpr bool entries_valid = ((detail::check_entry<Entries>(), true) && ...);
+  static_assert((0 + ... + (detail::entry<Entries>::is_image ? 1 : 0)) <= 1,
+                "iecoop: an application has one process image; give use_image<...>{} once");
+  static_assert((0 + ... + (detail::entry<Entries>::is_capacity ? 1 : 0)) <= 1,
+                "iecoop: an application has one retain memory; give retain_capacity<N>{} once");
   using globals_list = typename detail::fold_entries<detail::add_globals, detail::type_list<>, Entries...>::type;
   using owned_list = typename detail::fold_entries<detail::add_programs, globals_list, Entries...>::type;
   using task_list = typename detail::fold_entries<detail::add_task, detail::type_list<>, Entries...>::type;
@@ -360,11 +365,13 @@ class application {
    * are constructed first — FB_Init runs for each, with bInitRetains = FALSE if retained data
    * was found (in the attached storage, else in the retain memory from the last stop) and
    * TRUE otherwise — and the retained values are restored (`mode` says which). After a reset,
-   * start() continues with the existing instances. Returns FALSE in the exception state
-   * (reset first).
+   * start() continues with the existing instances; cyclic and freewheeling tasks are released
+   * from now() on. On a running application it does nothing. Returns FALSE in the exception
+   * state (reset first).
    */
   bool start(start_mode mode = start_mode::restart) {
     if (state_ == application_state::exception) return false;
+    if (state_ == application_state::running) return true;
     if (state_ == application_state::stopped) load(mode);
     state_ = application_state::running;
     for (task_state& t : tasks_) {
@@ -380,13 +387,17 @@ class application {
     if (state_ == application_state::stopped) return;
     const std::size_t size = save(retain_kinds::both);
     retain_size_ = size;
-    if (size > 0 && storage_.object != nullptr) storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size));
+    if (size > 0 && storage_.object != nullptr &&
+        !storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size))) {
+      fault(fault_kind::invalid_value, "the storage did not save the RETAIN/PERSISTENT data; the next restart of another process starts without it");
+    }
     {
       detail::lifecycle_scope exiting({true, false, false, false});
       store_.destroy_all();
     }
     for (task_state& t : tasks_) t.clear_schedule();
     running_ = no_task;
+    faulted_task_ = nullptr;
     state_ = application_state::stopped;
   }
 
@@ -409,13 +420,7 @@ class application {
     }
     construct(kind != reset_kind::warm);
     if (size > 0) restore(keep, size);
-    for (task_state& t : tasks_) {
-      t.clear_schedule();
-      t.reset_statistics();
-      t.cycle_number_ = 0;
-    }
-    running_ = no_task;
-    faulted_task_ = nullptr;
+    restart_tasks();
     state_ = application_state::halted;
   }
 
@@ -457,8 +462,10 @@ class application {
   // --- Tasks and instances ----------------------------------------------------------
 
   [[nodiscard]] static constexpr std::size_t task_count() noexcept { return task_count_; }
-  [[nodiscard]] task_state& task(std::size_t index) noexcept { return tasks_[index < task_count_ ? index : 0]; }
-  [[nodiscard]] const task_state& task(std::size_t index) const noexcept { return tasks_[index < task_count_ ? index : 0]; }
+  /// The task at `index` in the configuration; an index out of range reports
+  /// fault_kind::invalid_value and yields the first task.
+  [[nodiscard]] task_state& task(std::size_t index) noexcept { return tasks_[checked_index(index)]; }
+  [[nodiscard]] const task_state& task(std::size_t index) const noexcept { return tasks_[checked_index(index)]; }
   /// The task called `name`; an unknown name reports fault_kind::invalid_value and yields the first task.
   [[nodiscard]] task_state& task(std::string_view name) noexcept {
     for (task_state& t : tasks_) {
@@ -530,6 +537,12 @@ class application {
   friend class realtime_runner;
 
   static constexpr std::size_t no_task = task_count_;
+
+  static std::size_t checked_index(std::size_t index) noexcept {
+    if (index < task_count_) return index;
+    fault(fault_kind::invalid_value, "no task at this index in the application; the first task stands in");
+    return 0;
+  }
   static constexpr std::size_t output_bytes = image::output_bytes;
 
   struct io_binding {
@@ -569,9 +582,15 @@ class application {
         size == 0 ? retain_kinds::none : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
     construct(!keep.contains(retain_kind::retain));
     if (size > 0) restore(keep, size);
+    restart_tasks();
+  }
+
+  // The tasks as after a download: no cycle under way, statistics and event memories cleared.
+  void restart_tasks() noexcept {
     for (task_state& t : tasks_) {
       t.clear_schedule();
       t.reset_statistics();
+      t.watchdog_streak_ = 0;
       t.cycle_number_ = 0;
       t.event_previous_ = false;
     }
@@ -634,15 +653,17 @@ class application {
   }
 
   void check_watchdog(task_state& t, LTIME cycle_time) {
+    // The streak is kept apart from the statistics, which a user may reset at any time.
     task_statistics& s = t.statistics_;
     if (cycle_time <= t.settings_.watchdog_time) {
+      t.watchdog_streak_ = 0;
       s.consecutive_watchdog_overruns = 0;
       return;
     }
     ++s.watchdog_overruns;
-    ++s.consecutive_watchdog_overruns;
+    s.consecutive_watchdog_overruns = ++t.watchdog_streak_;
     const unsigned sensitivity = t.settings_.watchdog_sensitivity;
-    if (s.consecutive_watchdog_overruns >= sensitivity || cycle_time > t.settings_.watchdog_time * sensitivity) {
+    if (t.watchdog_streak_ >= sensitivity || cycle_time > t.settings_.watchdog_time * sensitivity) {
       state_ = application_state::exception;
       faulted_task_ = &t;
       for (task_state& other : tasks_) other.clear_schedule();
@@ -731,7 +752,8 @@ class application {
 
   /// Everything that happens at now_: the running cycle ends if its time is used up, tasks
   /// are released, and the processor goes to the highest-priority task — whose cycle starts
-  /// if it had not; cycles that take no time end at once.
+  /// if it had not (and the choice is made again, as the cycle's code may have raised an
+  /// event); cycles that take no time end at once.
   void process_instant() {
     if (running_ != no_task && tasks_[running_].remaining_ == LTIME{}) {
       const std::size_t done = running_;
@@ -746,16 +768,24 @@ class application {
       task_state& t = tasks_[next];
       if (!t.active_) {
         begin_cycle(next, now_);
-        sample_events(now_);
+        sample_events(now_);  // its code may have raised an event of a higher-priority task:
+        continue;             // that one preempts the cycle right away
       }
       if (t.remaining_ != LTIME{}) {
         running_ = next;
         return;
       }
       end_cycle(next, now_);
-      sample_events(now_);
     }
     running_ = no_task;
+  }
+
+  /// Ends, at `now`, the cycles a simulation left under way (for a runner that takes over).
+  void finish_cycles(LTIME now) {
+    running_ = no_task;
+    for (std::size_t i = 0; i < task_count_; ++i) {
+      if (tasks_[i].active_ && state_ == application_state::running) end_cycle(i, now);
+    }
   }
 
   /// The earliest release of a cyclic or freewheeling task (LTIME::max() if none is pending).

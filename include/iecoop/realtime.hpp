@@ -112,6 +112,8 @@ class realtime_runner {
       const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - origin);
       return base + LTIME::from_ticks(static_cast<std::uint64_t>(elapsed.count()));
     };
+    app_.now_ = clock();
+    app_.finish_cycles(app_.now_);  // a cycle a simulation left under way ends now
     bool has_event_task = false;
     for (const task_state& t : app_.tasks_) has_event_task = has_event_task || t.settings_.kind == task_kind::event;
 

@@ -279,3 +279,15 @@ TEST_SUITE("application: retained data in a storage") {
     CHECK(faults.count == 2);
   }
 }
+
+TEST_CASE("a storage that cannot save the retained data is a fault") {
+  fault_recorder faults;
+  memory_storage<8> tiny;  // smaller than the image
+  auto plc = make_plant();
+  plc.use_storage(tiny);
+  plc.start();
+  plc.stop();
+  CHECK(faults.count == 1);
+  CHECK(faults.last_kind == fault_kind::invalid_value);
+  CHECK(tiny.size() == 0);
+}

@@ -421,3 +421,83 @@ TEST_SUITE("application: tasks by name, faults") {
     CHECK(FAST_PRG::instance().nCalls == 5U);  // A: 0, 2, 4; B: 0, 3
   }
 }
+
+namespace {
+
+BOOL bGo;  // raised by GO_PRG's code
+
+struct GO_PRG : program<GO_PRG> {
+  void body() {
+    trace += 'G';
+    bGo = TRUE;
+  }
+};
+
+}  // namespace
+
+TEST_SUITE("application: review regressions") {
+  TEST_CASE("an event raised by a cycle's code preempts that cycle at once, however the run is split") {
+    // GO (priority 5, 4 ms) raises bGo when its cycle starts at 0 ms; ALARM (priority 0)
+    // takes the processor at 0 ms, whether the run is one span or several.
+    for (int split = 0; split < 2; ++split) {
+      bGo = FALSE;
+      application plc{task<GO_PRG>{"Go", cyclic{"T#10ms"_iec}, 5}, task<ALARM_PRG>{"Alarm", event{bGo}, 0}};
+      plc.task("Go").model_execution_time(ms(4));
+      plc.start();
+      trace.clear();
+      if (split == 0) {
+        plc.run_for(ms(10));
+      } else {
+        plc.run_for(ms(1));
+        plc.run_for(ms(9));
+      }
+      CHECK(trace == "GA");
+      CHECK(ALARM_PRG::instance().last_seen == ms(0));
+      CHECK(plc.task("Alarm").statistics().last_jitter == LTIME{});
+      CHECK(plc.task("Go").statistics().last_cycle_time == ms(4));
+    }
+    bGo = FALSE;
+  }
+
+  TEST_CASE("a reset forgets the event memory: a condition still TRUE fires after it") {
+    bAlarm = TRUE;
+    application plc{task<ALARM_PRG>{"Alarm", event{bAlarm}, 0}};
+    plc.start();
+    plc.run_for(ms(1));
+    CHECK(ALARM_PRG::instance().nRuns == 1U);
+    plc.reset(reset_kind::warm);
+    plc.start();
+    plc.run_for(ms(1));
+    CHECK(ALARM_PRG::instance().nRuns == 1U);  // a new instance, run once by the edge after the reset
+    CHECK(plc.task(0).statistics().cycles == 1);
+    bAlarm = FALSE;
+  }
+
+  TEST_CASE("start on a running application changes nothing") {
+    application plc{task<FAST_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0}};
+    plc.start();
+    plc.run_for(ms(3));
+    CHECK(plc.start());
+    plc.run_for(ms(17));
+    CHECK(FAST_PRG::instance().seen == std::vector<LTIME>{ms(0), ms(10)});
+  }
+
+  TEST_CASE("resetting the statistics does not reset the watchdog's count of overruns in a row") {
+    application plc{task<FAST_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0, watchdog{"T#2ms"_iec, 2}}};
+    plc.task(0).model_execution_time(ms(3));
+    iecoop_test::fault_recorder faults;
+    plc.start();
+    plc.run_for(ms(5));
+    plc.task(0).reset_statistics();
+    plc.run_for(ms(10));
+    CHECK(faults.count == 1);
+    CHECK(plc.state() == application_state::exception);
+  }
+
+  TEST_CASE("a task index out of range is a fault") {
+    application plc{task<FAST_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0}};
+    iecoop_test::fault_recorder faults;
+    CHECK(&plc.task(7) == &plc.task(0));
+    CHECK(faults.count == 1);
+  }
+}

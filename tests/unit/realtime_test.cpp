@@ -103,3 +103,19 @@ TEST_SUITE("realtime runner") {
     CHECK(TICK_PRG::instance().nCalls >= 1U);  // fifo_active() depends on the machine's rights
   }
 }
+
+TEST_CASE("the runner ends a cycle a simulation left under way, without running it again") {
+  application plc{task<TICK_PRG>{"Tick", cyclic{"T#10ms"_iec}, 0}};
+  plc.task(0).model_execution_time(LTIME("T#4ms"_iec));
+  plc.start();
+  plc.run_for("T#2ms"_iec);  // the cycle at 0 ms is under way, 2 ms left
+  CHECK(TICK_PRG::instance().nCalls == 1U);
+  std::atomic<bool> stop{false};
+  realtime_runner runner{plc};
+  CHECK(runner.run(stop, "T#5ms"_iec) == run_end::time_elapsed);
+  CHECK(TICK_PRG::instance().nCalls == 1U);  // the next release is at 10 ms
+  CHECK(plc.task(0).statistics().cycles == 1);
+  plc.run_for("T#10ms"_iec);
+  CHECK(TICK_PRG::instance().nCalls == 2U);
+  CHECK(plc.task(0).statistics().cycles == 2);
+}
