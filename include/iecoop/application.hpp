@@ -54,7 +54,8 @@ namespace iecoop {
 
 /// Global variable lists (VAR_GLOBAL, with RETAIN and PERSISTENT members) the application owns:
 /// it constructs them at start, resets them with the programs and keeps their retained values.
-/// Reach one with application::get<GVL>().
+/// Reach one with application::get<GVL>(), or, from any POU, with GVL::instance() when the
+/// list derives from global_variables<GVL> (<iecoop/global_variables.hpp>).
 template <class... Lists>
 struct globals {};
 
@@ -487,8 +488,8 @@ class application {
     static_assert(owns<T, owned_list>::value,
                   "iecoop: the application owns no instance of this type; name the program in a task, or the list in globals<...>");
     if (state_ != application_state::stopped) return store_.template get<T>();
-    if constexpr (detail::program_type<T>) {
-      return T::instance();  // reports the fault and yields the program's scratch instance
+    if constexpr (requires { T::instance(); }) {
+      return T::instance();  // a program or global_variables<>: reports the fault, yields its scratch instance
     } else {
       fault(fault_kind::invalid_value, "application::get before start(); a scratch instance stands in");
       static T scratch;

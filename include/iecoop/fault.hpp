@@ -28,6 +28,7 @@ enum class fault_kind : std::uint8_t {
   watchdog,              ///< a task exceeded its watchdog time sensitivity times in a row
   user,                  ///< raised by application code
   duplicate_program,     ///< a second instance of a PROGRAM while the first one lives
+  duplicate_globals,     ///< a second instance of a global variable list while the first one lives
 };
 
 /// A fault as the handler sees it. `message` points to a string literal.
@@ -50,6 +51,7 @@ using fault_handler = void (*)(const fault_info&);
     case fault_kind::watchdog: return "watchdog";
     case fault_kind::user: return "user fault";
     case fault_kind::duplicate_program: return "second PROGRAM instance";
+    case fault_kind::duplicate_globals: return "second instance of a global variable list";
   }
   return "unknown fault";
 }

@@ -21,6 +21,7 @@
 #include <iecoop/fault.hpp>
 #include <iecoop/file_storage.hpp>
 #include <iecoop/function_block.hpp>
+#include <iecoop/global_variables.hpp>
 #include <iecoop/interface.hpp>
 #include <iecoop/io.hpp>
 #include <iecoop/lifecycle.hpp>

@@ -22,6 +22,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/fixed_string.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/process_image.hpp>
 #include <iecoop/types.hpp>
 
@@ -102,10 +103,13 @@ class simulated_io {
  public:
   using image_type = Image;
 
-  /// Sets the field value of input A (%I): `set<"%IX0.5">(TRUE)`, `set<"%IW2">(INT(300))`.
-  /// The program sees it after the next read_inputs().
-  template <detail::fixed_string A, class T>
-  void set(T value) noexcept {
+  /// Sets the field value of input A (%I): `set<"%IX0.5">(TRUE)`, `set<"%IW2">(INT(300))`,
+  /// `set<"%IX0.2">(tPulse.Q)` (a variable wrapper gives its value). The program sees it after
+  /// the next read_inputs().
+  template <detail::fixed_string A, class V>
+  void set(const V& given) noexcept {
+    using T = detail::unwrapped_t<const V&>;
+    const T value = detail::value_of(given);
     constexpr io_address address = address_of<A>;
     static_assert(!detail::address_parses<A> || address.area == io_area::input,
                   "iecoop: simulated_io::set<> sets an input (%I...) of the field; outputs (%Q) are written by the program "

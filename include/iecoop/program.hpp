@@ -16,6 +16,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/function_block.hpp>
+#include <iecoop/detail/single_instance.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
@@ -23,49 +24,15 @@ namespace iecoop {
 
 /**
  * The base of a PROGRAM `Self` (CRTP): a function block of which one instance lives at a
- * time. Declare that instance once (a global, or a member of your application) and reach it
- * from anywhere as `Self::instance()`. Constructing a second instance while the first lives
- * reports fault_kind::duplicate_program; copies (made by an online change) do not count.
+ * time. Declare that instance once (a global, a member of your application, or let an
+ * iecoop::application own it) and reach it from anywhere as `Self::instance()`
+ * (`Self::exists()` tells whether it lives). Constructing a second instance while the first
+ * lives reports fault_kind::duplicate_program; copies (made by an online change) do not
+ * count. Without an instance, instance() reports fault_kind::invalid_value and returns a
+ * scratch instance.
  */
 template <class Self>
-class program : public function_block<Self> {
- public:
-  /// The live instance. Without one, reports fault_kind::invalid_value and returns a scratch
-  /// instance (which never becomes the live one).
-  static Self& instance() {
-    if (live_ == nullptr) {
-      fault(fault_kind::invalid_value, "PROGRAM used before its instance was declared; a scratch instance stands in");
-      return scratch();
-    }
-    return *live_;
-  }
-  /// TRUE while an instance lives.
-  static bool exists() noexcept { return live_ != nullptr; }
-
-  program() {
-    if (making_scratch_) return;
-    if (live_ != nullptr) {
-      fault(fault_kind::duplicate_program, "a PROGRAM has exactly one instance; this one is not registered");
-      return;
-    }
-    live_ = static_cast<Self*>(this);
-  }
-  program(const program& other) : function_block<Self>(other) {}  // a copy is not the instance
-  program& operator=(const program&) = default;
-  ~program() {
-    if (live_ == static_cast<Self*>(this)) live_ = nullptr;
-  }
-
- private:
-  static Self& scratch() {
-    making_scratch_ = true;
-    static Self instance;
-    making_scratch_ = false;
-    return instance;
-  }
-  static inline Self* live_ = nullptr;
-  static inline bool making_scratch_ = false;
-};
+class program : public function_block<Self>, public detail::single_instance<Self, fault_kind::duplicate_program> {};
 
 }  // namespace iecoop
 

@@ -62,7 +62,11 @@ class realtime_runner {
  public:
   explicit realtime_runner(App& app, realtime_options options = {}) noexcept : app_(app), options_(options) {}
 
-  /// Runs until `stop` is set, `duration` has passed or the application stops running.
+  /// Runs until `stop` is set, `duration` of steady time has passed, or the application
+  /// stops running. Call it again to go on: the application's clock follows the steady clock
+  /// from the first call on (unless a simulation moved it in between), so a caller may run it
+  /// in slices, printing in between, say: the time between two calls counts as time passed,
+  /// and releases due in it are late (or, later than an interval, omitted) as on a busy PLC.
   run_end run(const std::atomic<bool>& stop, LTIME duration = LTIME::max()) {
     const scheduling_scope scheduling(*this);
     return run_cycles(stop, duration);
@@ -105,13 +109,25 @@ class realtime_runner {
   };
 
   run_end run_cycles(const std::atomic<bool>& stop, LTIME duration) {
-    const auto origin = std::chrono::steady_clock::now();
-    const LTIME base = app_.now_;
-    const LTIME deadline = duration > LTIME::max() - base ? LTIME::max() : base + duration;
-    const auto clock = [&] {
-      const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - origin);
-      return base + LTIME::from_ticks(static_cast<std::uint64_t>(elapsed.count()));
-    };
+    // The application's clock follows the steady clock from the first run() on; a run() that
+    // continues where the last one ended (nothing simulated in between) keeps that mapping,
+    // so the time spent between two calls counts as time passed.
+    if (!mapped_ || app_.now_ != last_now_) {
+      origin_ = std::chrono::steady_clock::now();
+      base_ = app_.now_;
+      mapped_ = true;
+    }
+    const run_end end = run_mapped(stop, duration);
+    last_now_ = app_.now_;
+    return end;
+  }
+
+  run_end run_mapped(const std::atomic<bool>& stop, LTIME duration) {
+    const auto origin = origin_;
+    const LTIME base = base_;
+    const LTIME begin = clock_now();
+    const LTIME deadline = duration > LTIME::max() - begin ? LTIME::max() : begin + duration;
+    const auto clock = [this] { return clock_now(); };
     app_.now_ = clock();
     app_.finish_cycles(app_.now_);  // a cycle a simulation left under way ends now
     bool has_event_task = false;
@@ -161,9 +177,19 @@ class realtime_runner {
 #endif
   }
 
+  // The application's time now: base_ plus the steady time since origin_.
+  [[nodiscard]] LTIME clock_now() const noexcept {
+    const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - origin_);
+    return base_ + LTIME::from_ticks(static_cast<std::uint64_t>(elapsed.count()));
+  }
+
   App& app_;
   realtime_options options_;
   bool fifo_active_ = false;
+  bool mapped_ = false;
+  std::chrono::steady_clock::time_point origin_{};
+  LTIME base_{};
+  LTIME last_now_{};
 };
 
 }  // namespace iecoop

@@ -50,7 +50,7 @@ struct MACHINE_PRG : program<MACHINE_PRG> {
 };
 
 // VAR_GLOBAL RETAIN / PERSISTENT, and a plain one, in one list.
-struct GVL_Plant {
+struct GVL_Plant : global_variables<GVL_Plant> {
   retain<INT> iShift{INT(1)};
   persistent<REAL> rTotal{REAL(0.5f)};
   INT iPlain = 7;
@@ -100,6 +100,18 @@ TEST_SUITE("application: start and stop") {
     // The application's end stops it.
     CHECK(events == "init:TF exit:F init:FF exit:F ");
     CHECK_FALSE(MACHINE_PRG::exists());
+  }
+
+  TEST_CASE("a global variable list the application owns is reached by its name while it runs") {
+    auto plc = make_plant();
+    CHECK_FALSE(GVL_Plant::exists());
+    plc.start();
+    CHECK(GVL_Plant::exists());
+    CHECK(&GVL_Plant::instance() == &plc.get<GVL_Plant>());
+    GVL_Plant::instance().iShift = 2;  // ST: GVL_Plant.iShift := 2;
+    CHECK(plc.get<GVL_Plant>().iShift == 2);
+    plc.stop();
+    CHECK_FALSE(GVL_Plant::exists());
   }
 
   TEST_CASE("get before start reports a fault and yields a scratch instance") {

@@ -99,6 +99,20 @@ TEST_SUITE("I/O drivers") {
     CHECK(field.get<INT, "%IW1">() == -10);
   }
 
+  TEST_CASE("simulated_io: set<> takes a variable wrapper's value, such as a block's output") {
+    sim_image::clear();
+    simulated_io<sim_image> field;
+    TP pulse;  // a simulated sensor: a pulse of T#5ms
+    cycle_clock::set(LTIME{});
+    pulse("IN"_ = TRUE, "PT"_ = 5);
+    field.set<"%IX0.0">(pulse.Q);  // pulse.Q is the block's VAR_OUTPUT wrapper
+    CHECK(field.get<BOOL, "%IX0.0">() == TRUE);
+    cycle_clock::set(LTIME(TIME(5)));
+    pulse();
+    field.set<"%IX0.0">(pulse.Q);
+    CHECK(field.get<BOOL, "%IX0.0">() == FALSE);
+  }
+
   TEST_CASE("simulated_io: inputs are latched, not seen before the next cycle") {
     sim_image::clear();
     simulated_io<sim_image> field;

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// iecoop/detail/single_instance.hpp — a type of which one instance lives at a time, reachable
+// from anywhere: PROGRAMs and global variable lists.
+// IWYU pragma: private, include <iecoop/program.hpp>
+#pragma once
+
+#include <iecoop/fault.hpp>
+
+namespace iecoop::detail {
+
+/**
+ * The base of `Self` (CRTP) that registers the instance under construction as the one of
+ * its type. Constructing a second while the first lives reports `duplicate` (with
+ * `duplicate_message`) and leaves the first registered; copies (made by an online change)
+ * are not registered. Without an instance, instance() reports fault_kind::invalid_value and
+ * returns a scratch instance, which is never registered.
+ */
+template <class Self, fault_kind Duplicate>
+class single_instance {
+ public:
+  /// The live instance (or, reporting a fault, a scratch one).
+  static Self& instance() {
+    if (live_ == nullptr) {
+      fault(fault_kind::invalid_value, "used before its instance exists (a PROGRAM or global variable list); a scratch instance stands in");
+      return scratch();
+    }
+    return *live_;
+  }
+  /// TRUE while an instance lives.
+  static bool exists() noexcept { return live_ != nullptr; }
+
+  // Public, so that a program or list stays an aggregate (`PLC_PRG p{};`).
+  single_instance() {
+    if (making_scratch_) return;
+    if (live_ != nullptr) {
+      fault(Duplicate, "a PROGRAM or global variable list has exactly one instance; this one is not registered");
+      return;
+    }
+    live_ = static_cast<Self*>(this);
+  }
+  single_instance(const single_instance&) noexcept {}  // a copy is not the instance
+  single_instance& operator=(const single_instance&) noexcept { return *this; }
+  ~single_instance() {
+    if (live_ == static_cast<Self*>(this)) live_ = nullptr;
+  }
+
+ private:
+  static Self& scratch() {
+    making_scratch_ = true;
+    static Self instance;
+    making_scratch_ = false;
+    return instance;
+  }
+  static inline Self* live_ = nullptr;
+  static inline bool making_scratch_ = false;
+};
+
+}  // namespace iecoop::detail
