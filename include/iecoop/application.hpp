@@ -38,6 +38,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/cycle_clock.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
+#include <iecoop/detail/single_instance.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/interface.hpp>
 #include <iecoop/io.hpp>
@@ -151,6 +152,9 @@ class task_state {
 namespace detail {
 
 // type_list<...> comes from <iecoop/interface.hpp> (through lifecycle.hpp).
+
+/// a + b, or LTIME::max() (which the scheduler treats as "never") if that would wrap.
+constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept { return b > LTIME::max() - a ? LTIME::max() : a + b; }
 
 template <class List, class T>
 struct push_unique;
@@ -292,7 +296,20 @@ template <class Image, class... Objects>
 struct located_check;
 template <class Image, class... Objects>
 struct located_check<Image, type_list<Objects...>> {
-  static constexpr void run() { check_located<Objects...>(); }
+  template <auto... Members>
+  static constexpr bool in_image(pins<Members...>) noexcept {
+    return (std::is_same_v<typename located_type_of<Members>::image_type, Image> && ...);
+  }
+  static constexpr void run() {
+    check_located<Objects...>();
+    using list = all_located_t<Objects...>;
+    if constexpr (all_located(list{})) {
+      static_assert(in_image(list{}),
+                    "iecoop: a located variable of the application's programs or global variable lists lies in another "
+                    "process image than the application's; give it the application's image: located<T, \"%...\", Image>, "
+                    "with Image as in use_image<Image>{}");
+    }
+  }
 };
 
 }  // namespace detail
@@ -390,7 +407,7 @@ class application {
     retain_size_ = size;
     if (size > 0 && storage_.object != nullptr &&
         !storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size))) {
-      fault(fault_kind::invalid_value, "the storage did not save the RETAIN/PERSISTENT data; the next restart of another process starts without it");
+      fault(fault_kind::invalid_value, "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or with older data)");
     }
     {
       detail::lifecycle_scope exiting({true, false, false, false});
@@ -434,7 +451,7 @@ class application {
 
   /// Runs every task that is due in [now(), now() + duration), in priority order, and
   /// leaves now() at the end of that span. Time passes also while the tasks do not run.
-  void run_for(LTIME duration) { run_until(now_ + duration); }
+  void run_for(LTIME duration) { run_until(detail::add_saturated(now_, duration)); }
 
   /// Runs every task that is due before `until` (see run_for).
   void run_until(LTIME until) {
@@ -492,7 +509,11 @@ class application {
       return T::instance();  // a program or global_variables<>: reports the fault, yields its scratch instance
     } else {
       fault(fault_kind::invalid_value, "application::get before start(); a scratch instance stands in");
-      static T scratch;
+      static T& scratch = []() -> T& {
+        detail::scratch_scope making;  // programs inside it do not become the live ones
+        static T instance;
+        return instance;
+      }();
       return scratch;
     }
   }
@@ -569,15 +590,18 @@ class application {
     published_.fill(std::byte{0});
     detail::lifecycle_scope initialising({init_retains, false, false, false});
     store_.construct_all();
+    // What the constructors wrote to %Q (FB_Init, a located output's initial value) goes out
+    // with the first cycle's outputs.
+    if constexpr (output_bytes > 0) std::memcpy(published_.data(), image::outputs().data(), output_bytes);
   }
 
   void load(start_mode mode) {
-    std::size_t size = 0;
-    if (storage_.object != nullptr) {
+    // The retain memory holds this application's last stop(): never older than the storage,
+    // which may have failed to save it. A new application (a new process) has none yet.
+    std::size_t size = retain_size_;
+    if (size == 0 && storage_.object != nullptr) {
       size = storage_.load(storage_.object, retain_memory_);
       if (size > retain_memory_.size()) size = 0;
-    } else {
-      size = retain_size_;
     }
     const retain_kinds keep =
         size == 0 ? retain_kinds::none : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
@@ -600,8 +624,8 @@ class application {
   }
 
   std::size_t save(retain_kinds kinds) {
-    if (kinds.empty()) return 0;
     const auto objects = store_.objects();
+    if (kinds.empty() || detail::retained_count(objects, kinds) == 0) return 0;
     return detail::save_retained(objects, kinds, retain_memory_);
   }
   void restore(retain_kinds kinds, std::size_t size) {
@@ -649,7 +673,7 @@ class application {
     if (io_.object != nullptr) io_.write(io_.object, published_);
     const LTIME cycle_time = now - t.start_time_;
     t.statistics_.record(t.start_time_ - t.release_time_, cycle_time);
-    if (t.settings_.kind == task_kind::freewheeling) t.next_release_ = now + freewheeling_pause(cycle_time);
+    if (t.settings_.kind == task_kind::freewheeling) t.next_release_ = detail::add_saturated(now, freewheeling_pause(cycle_time));
     if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
   }
 
@@ -664,7 +688,10 @@ class application {
     ++s.watchdog_overruns;
     s.consecutive_watchdog_overruns = ++t.watchdog_streak_;
     const unsigned sensitivity = t.settings_.watchdog_sensitivity;
-    if (t.watchdog_streak_ >= sensitivity || cycle_time > t.settings_.watchdog_time * sensitivity) {
+    const LTIME watchdog_time = t.settings_.watchdog_time;
+    const bool single_timeout =
+        watchdog_time.count() <= LTIME::max().count() / sensitivity && cycle_time > watchdog_time * sensitivity;
+    if (t.watchdog_streak_ >= sensitivity || single_timeout) {
       state_ = application_state::exception;
       faulted_task_ = &t;
       for (task_state& other : tasks_) other.clear_schedule();
@@ -693,11 +720,12 @@ class application {
       if (t.settings_.kind == task_kind::event || t.next_release_ > now) continue;
       release(t, t.next_release_);
       if (t.settings_.kind == task_kind::cyclic) {
-        t.next_release_ += t.settings_.interval;
-        while (t.next_release_ <= now) {  // releases missed while late: omitted
-          ++t.statistics_.overruns;
-          ++t.statistics_.consecutive_overruns;
-          t.next_release_ += t.settings_.interval;
+        t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
+        if (t.next_release_ <= now) {  // releases missed while late: omitted
+          const std::uint64_t missed = (now - t.next_release_).count() / t.settings_.interval.count() + 1;
+          t.statistics_.overruns += missed;
+          t.statistics_.consecutive_overruns += static_cast<std::uint32_t>(missed);
+          t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
         }
       } else {
         t.next_release_ = LTIME::max();  // freewheeling: released again when the cycle ends
@@ -777,6 +805,7 @@ class application {
         return;
       }
       end_cycle(next, now_);
+      sample_events(now_);  // a condition may read what the cycle's end wrote to the field
     }
     running_ = no_task;
   }
@@ -802,7 +831,7 @@ class application {
   [[nodiscard]] LTIME next_instant() const noexcept {
     const LTIME release = next_release();
     if (running_ == no_task) return release;
-    const LTIME end = now_ + tasks_[running_].remaining_;
+    const LTIME end = detail::add_saturated(now_, tasks_[running_].remaining_);
     return end < release ? end : release;
   }
 

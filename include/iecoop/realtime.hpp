@@ -145,6 +145,9 @@ class realtime_runner {
       app_.release_due(now);
       for (std::size_t next = app_.pick(); next != App::no_task && app_.state_ == application_state::running; next = app_.pick()) {
         const LTIME start = clock();
+        // Overloaded (cycles longer than their intervals), tasks are always due: look at the
+        // stop flag and the deadline between cycles too.
+        if (stop.load(std::memory_order_relaxed) || start >= deadline) break;
         app_.now_ = start;
         app_.begin_cycle(next, start);
         const LTIME end = clock();
@@ -155,8 +158,8 @@ class realtime_runner {
       }
       now = clock();
       LTIME wake = app_.next_release();
-      if (has_event_task && now + options_.event_poll < wake) wake = now + options_.event_poll;
-      if (now + options_.max_sleep < wake) wake = now + options_.max_sleep;
+      if (has_event_task && detail::add_saturated(now, options_.event_poll) < wake) wake = detail::add_saturated(now, options_.event_poll);
+      if (detail::add_saturated(now, options_.max_sleep) < wake) wake = detail::add_saturated(now, options_.max_sleep);
       if (deadline < wake) wake = deadline;
       if (wake > now) sleep_until(origin + std::chrono::nanoseconds(static_cast<std::int64_t>((wake - base).count())));
     }

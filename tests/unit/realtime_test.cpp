@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <thread>
 
 using namespace iecoop;
@@ -137,4 +138,41 @@ TEST_CASE("run in slices, the application's clock keeps up with the wall clock")
   const task_statistics& s = plc.task(0).statistics();
   CHECK(s.overruns >= 5);  // the releases at 20, 25, ... 45 ms fell between the slices: one late, the others omitted
   CHECK(s.cycles + s.overruns <= static_cast<std::uint64_t>(plc.now().count() / 5000000 + 1));
+}
+
+namespace {
+struct SLOW_PRG : program<SLOW_PRG> {
+  var<UDINT> nCalls;
+  void body() {
+    nCalls = nCalls + 1U;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(3);
+    while (std::chrono::steady_clock::now() < until) {
+    }
+  }
+};
+}  // namespace
+
+TEST_CASE("overloaded (cycles longer than the interval), the runner still returns at its deadline") {
+  application plc{task<SLOW_PRG>{"Slow", cyclic{"T#1ms"_iec}, 0}};
+  plc.start();
+  std::atomic<bool> stop{false};
+  realtime_runner runner{plc};
+  const auto wall_start = std::chrono::steady_clock::now();
+  CHECK(runner.run(stop, "T#20ms"_iec) == run_end::time_elapsed);
+  CHECK(std::chrono::steady_clock::now() - wall_start < std::chrono::milliseconds(500));
+  CHECK(plc.task(0).statistics().overruns > 0);
+}
+
+TEST_CASE("huge max_sleep and event_poll settings still sleep") {
+  application plc{task<TICK_PRG>{"Tick", cyclic{"T#50ms"_iec}, 0}};
+  plc.start();
+  std::atomic<bool> stop{false};
+  realtime_options options;
+  options.max_sleep = LTIME::max();
+  options.event_poll = LTIME::max();
+  realtime_runner runner{plc, options};
+  const std::clock_t cpu_start = std::clock();
+  CHECK(runner.run(stop, "T#200ms"_iec) == run_end::time_elapsed);
+  const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  CHECK(cpu_ms < 100.0);  // busy-waiting would burn the whole 200 ms
 }

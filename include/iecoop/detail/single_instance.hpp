@@ -8,6 +8,19 @@
 
 namespace iecoop::detail {
 
+/// How many scratch instances are under construction: while one is, no program or global
+/// variable list (also one nested in it) registers as the live instance of its type.
+inline int scratch_depth = 0;
+
+/// Marks the construction of a scratch instance for its lifetime.
+class scratch_scope {
+ public:
+  scratch_scope() noexcept { ++scratch_depth; }
+  ~scratch_scope() { --scratch_depth; }
+  scratch_scope(const scratch_scope&) = delete;
+  scratch_scope& operator=(const scratch_scope&) = delete;
+};
+
 /**
  * The base of `Self` (CRTP) that registers the instance under construction as the one of
  * its type. Constructing a second while the first lives reports `duplicate` (with
@@ -31,7 +44,7 @@ class single_instance {
 
   // Public, so that a program or list stays an aggregate (`PLC_PRG p{};`).
   single_instance() {
-    if (making_scratch_) return;
+    if (scratch_depth > 0) return;
     if (live_ != nullptr) {
       fault(Duplicate, "a PROGRAM or global variable list has exactly one instance; this one is not registered");
       return;
@@ -46,13 +59,14 @@ class single_instance {
 
  private:
   static Self& scratch() {
-    making_scratch_ = true;
-    static Self instance;
-    making_scratch_ = false;
+    static Self& instance = []() -> Self& {
+      scratch_scope making;
+      static Self made;
+      return made;
+    }();
     return instance;
   }
   static inline Self* live_ = nullptr;
-  static inline bool making_scratch_ = false;
 };
 
 }  // namespace iecoop::detail
