@@ -381,6 +381,20 @@ TEST_SUITE("application: event and freewheeling tasks") {
     CHECK(FAST_PRG::instance().seen.back() - FAST_PRG::instance().seen[FAST_PRG::instance().seen.size() - 2] == ms(4));
   }
 
+  TEST_CASE("two freewheeling tasks share the freewheeling load") {
+    // 80 % maximum load, two freewheeling tasks: L = 40 / 2 = 20 %; a 2 ms cycle pauses
+    // 2 ms x 80 / 20 = 8 ms. A (priority 30) runs 0-2, B 2-4; A again at 10, B at 12, ...
+    application plc{task<FAST_PRG>{"A", freewheeling{}, 30}, task<SLOW_PRG>{"B", freewheeling{}, 31}};
+    plc.task("A").model_execution_time(ms(2));
+    plc.task("B").model_execution_time(ms(2));
+    plc.start();
+    trace.clear();
+    plc.run_for("T#25ms"_iec);
+    CHECK(FAST_PRG::instance().seen == std::vector<LTIME>{ms(0), ms(10), ms(20)});
+    CHECK(trace == "FSFSFS");
+    CHECK(plc.task("B").statistics().max_jitter == ms(2));  // released at 0, 10 (+2), 20 (+2); started 2, 12, 22
+  }
+
   TEST_CASE("a freewheeling task yields to cyclic tasks of higher priority") {
     application plc{task<FAST_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0}, task<SLOW_PRG>{"Free", freewheeling{}, 31}};
     plc.task("Fast").model_execution_time(LTIME::from_ticks(500000));

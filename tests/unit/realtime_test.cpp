@@ -96,7 +96,7 @@ TEST_SUITE("realtime runner") {
     bRealtimeEvent = FALSE;
   }
 
-  TEST_CASE("asking for SCHED_FIFO without the privilege runs all the same") {
+  TEST_CASE("a run that asks for SCHED_FIFO runs whether it is granted or not") {
     application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
     plc.start();
     std::atomic<bool> stop{false};
@@ -176,3 +176,28 @@ TEST_CASE("huge max_sleep and event_poll settings still sleep") {
   const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   CHECK(cpu_ms < 100.0);  // busy-waiting would burn the whole 200 ms
 }
+
+TEST_CASE("a watchdog fault in real time stops the application and the run") {
+  application plc{task<SLOW_PRG>{"Slow", cyclic{"T#10ms"_iec}, 0, watchdog{"T#1ms"_iec, 1}}};
+  iecoop_test::fault_recorder faults;
+  plc.start();
+  std::atomic<bool> stop{false};
+  realtime_runner runner{plc};
+  CHECK(runner.run(stop, "T#1s"_iec) == run_end::not_running);  // the first 3 ms cycle overruns 1 ms
+  CHECK(faults.count == 1);
+  CHECK(faults.last_kind == fault_kind::watchdog);
+  CHECK(plc.state() == application_state::exception);
+  CHECK(SLOW_PRG::instance().nCalls == 1U);
+}
+
+#if defined(__linux__)
+TEST_CASE("the thread's scheduling policy is as before after a run that asked for SCHED_FIFO") {
+  const int before = sched_getscheduler(0);
+  application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
+  plc.start();
+  std::atomic<bool> stop{false};
+  realtime_runner runner{plc, realtime_options{.fifo = true, .fifo_priority = 10}};
+  CHECK(runner.run(stop, "T#10ms"_iec) == run_end::time_elapsed);
+  CHECK(sched_getscheduler(0) == before);  // restored when FIFO was granted (as root), untouched otherwise
+}
+#endif
