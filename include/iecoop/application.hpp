@@ -381,8 +381,8 @@ class application {
   /**
    * Starts the tasks. If the instances do not exist yet (first start, or after stop()), they
    * are constructed first — FB_Init runs for each, with bInitRetains = FALSE if retained data
-   * was found (in the attached storage, else in the retain memory from the last stop) and
-   * TRUE otherwise — and the retained values are restored (`mode` says which). After a reset,
+   * was found (in the retain memory from this application's last stop, else in the attached
+   * storage) and TRUE otherwise — and the retained values are restored (`mode` says which). After a reset,
    * start() continues with the existing instances; cyclic and freewheeling tasks are released
    * from now() on. On a running application it does nothing. Returns FALSE in the exception
    * state (reset first).
@@ -587,7 +587,6 @@ class application {
 
   void construct(bool init_retains) {
     image::clear();
-    published_.fill(std::byte{0});
     detail::lifecycle_scope initialising({init_retains, false, false, false});
     store_.construct_all();
     // What the constructors wrote to %Q (FB_Init, a located output's initial value) goes out
