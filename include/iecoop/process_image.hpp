@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -509,15 +510,12 @@ struct member_pointer_parts<V C::*> {
 template <auto Member>
 using located_type_of = typename member_pointer_parts<decltype(Member)>::type;
 
-/// The located variables T lists in `using LOCATED = pins<...>;`, or none.
-template <class T>
-struct located_list {
-  using type = pins<>;
-};
-template <class T>
-  requires requires { typename T::LOCATED; }
-struct located_list<T> {
-  using type = typename T::LOCATED;
+/// A block's or list's `using LOCATED = pins<...>;`, as pins.hpp reads VAR_INPUT: along the
+/// EXTENDS chain, the base's first, so a derived block's own list does not hide its base's.
+struct located_section {
+  template <class B>
+  using declared = typename B::LOCATED;
+  static constexpr std::string_view keyword = "LOCATED";
 };
 
 template <class... Lists>
@@ -607,7 +605,7 @@ struct located_overlap {
 };
 
 template <class... Objects>
-using all_located_t = typename concat_all<typename located_list<Objects>::type...>::type;
+using all_located_t = typename concat_all<typename section_pins<located_section, Objects>::type...>::type;
 
 }  // namespace detail
 

@@ -334,6 +334,27 @@ TEST_SUITE("process image") {
   }
 }
 
+// A derived block lists only the located variables it adds; the check sees its base's too.
+struct FB_IoBase : function_block<FB_IoBase> {
+  [[no_unique_address]] located<BOOL, "%QX3.0", io_image> bBaseOut;
+  using LOCATED = pins<&FB_IoBase::bBaseOut>;
+  virtual void body() {}
+  virtual ~FB_IoBase() = default;
+};
+struct FB_IoDerived : extends<FB_IoDerived, FB_IoBase> {
+  [[no_unique_address]] located<BYTE, "%QB3", io_image> byDerived;  // shares bit 0 of byte 3 with bBaseOut
+  using LOCATED = pins<&FB_IoDerived::byDerived>;
+  void body() override {}
+};
+struct FB_IoDerivedApart : extends<FB_IoDerivedApart, FB_IoBase> {
+  [[no_unique_address]] located<BYTE, "%QB4", io_image> byDerived;
+  using LOCATED = pins<&FB_IoDerivedApart::byDerived>;
+  void body() override {}
+};
+static_assert(!located_disjoint<FB_IoDerived>);
+static_assert(located_disjoint<FB_IoDerivedApart>);
+static_assert(located_disjoint<FB_IoBase>);
+
 TEST_SUITE("located variables") {
   TEST_CASE("at<\"%...\"> is a directly represented variable: %IX5 in an expression, %QX1.0 := TRUE") {
     io_image::clear();
