@@ -524,9 +524,8 @@ class application {
   /// cycle, the outputs a cycle changed are written at its end. The driver must outlive its use.
   template <IoDriver D>
   void connect(D& driver) noexcept {
-    io_.object = &driver;
-    io_.read = [](void* d, std::span<std::byte> in) { static_cast<D*>(d)->read_inputs(in); };
-    io_.write = [](void* d, std::span<const std::byte> out) { static_cast<D*>(d)->write_outputs(out); };
+    io_ = callback_io{[](std::span<std::byte> in, void* d) { static_cast<D*>(d)->read_inputs(in); },
+                      [](std::span<const std::byte> out, void* d) { static_cast<D*>(d)->write_outputs(out); }, &driver};
   }
 
   /// Saves retained data to `storage` at stop() and reads it at the start() that constructs
@@ -567,11 +566,6 @@ class application {
   }
   static constexpr std::size_t output_bytes = image::output_bytes;
 
-  struct io_binding {
-    void* object = nullptr;
-    void (*read)(void*, std::span<std::byte>) = nullptr;
-    void (*write)(void*, std::span<const std::byte>) = nullptr;
-  };
   struct storage_binding {
     void* object = nullptr;
     bool (*save)(void*, std::span<const std::byte>) = nullptr;
@@ -643,7 +637,7 @@ class application {
     t.start_time_ = now;
     t.remaining_ = t.cost_of(t.cycle_number_);
     ++t.cycle_number_;
-    if (io_.object != nullptr) io_.read(io_.object, image::inputs());
+    io_.read_inputs(image::inputs());
     cycle_clock::set(now);
     if constexpr (output_bytes == 0) {
       run_table<task_list>::value[index](store_);
@@ -669,7 +663,7 @@ class application {
     for (std::size_t b = 0; b < output_bytes; ++b) {
       published_[b] = (published_[b] & ~staged.mask[b]) | (staged.value[b] & staged.mask[b]);
     }
-    if (io_.object != nullptr) io_.write(io_.object, published_);
+    io_.write_outputs(published_);
     const LTIME cycle_time = now - t.start_time_;
     t.statistics_.record(t.start_time_ - t.release_time_, cycle_time);
     if (t.settings_.kind == task_kind::freewheeling) t.next_release_ = detail::add_saturated(now, freewheeling_pause(cycle_time));
@@ -849,7 +843,7 @@ class application {
   std::array<std::byte, output_bytes> published_{};
   std::array<std::byte, retain_bytes> retain_memory_{};
   std::size_t retain_size_ = 0;
-  io_binding io_{};
+  callback_io io_{};  // the connected driver; without one, nothing is read or written
   storage_binding storage_{};
   LTIME now_{};
   std::size_t running_ = no_task;
