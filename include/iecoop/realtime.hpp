@@ -18,6 +18,7 @@
 // tells). For Linux and other POSIX systems; not part of <iecoop/iecoop.hpp>.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -123,20 +124,14 @@ class realtime_runner {
   }
 
   run_end run_mapped(const std::atomic<bool>& stop, LTIME duration) {
-    const auto origin = origin_;
-    const LTIME base = base_;
-    const LTIME begin = clock_now();
-    const LTIME deadline = duration > LTIME::max() - begin ? LTIME::max() : begin + duration;
-    const auto clock = [this] { return clock_now(); };
-    app_.now_ = clock();
+    app_.now_ = clock_now();
+    const LTIME deadline = detail::add_saturated(app_.now_, duration);
     app_.finish_cycles(app_.now_);  // a cycle a simulation left under way ends now
-    bool has_event_task = false;
-    for (const task_state& t : app_.tasks_) has_event_task = has_event_task || t.settings_.kind == task_kind::event;
 
     for (;;) {
       if (stop.load(std::memory_order_relaxed)) return run_end::stop_requested;
       if (app_.state_ != application_state::running) return run_end::not_running;
-      LTIME now = clock();
+      LTIME now = clock_now();
       if (now >= deadline) {
         app_.now_ = deadline > app_.now_ ? deadline : app_.now_;
         return run_end::time_elapsed;
@@ -144,24 +139,22 @@ class realtime_runner {
       app_.now_ = now;
       app_.release_due(now);
       for (std::size_t next = app_.pick(); next != App::no_task && app_.state_ == application_state::running; next = app_.pick()) {
-        const LTIME start = clock();
+        const LTIME start = clock_now();
         // Overloaded (cycles longer than their intervals), tasks are always due: look at the
         // stop flag and the deadline between cycles too.
         if (stop.load(std::memory_order_relaxed) || start >= deadline) break;
         app_.now_ = start;
         app_.begin_cycle(next, start);
-        const LTIME end = clock();
+        const LTIME end = clock_now();
         app_.now_ = end;
         app_.end_cycle(next, end);
         if (app_.state_ != application_state::running) break;
         app_.release_due(end);
       }
-      now = clock();
-      LTIME wake = app_.next_release();
-      if (has_event_task && detail::add_saturated(now, options_.event_poll) < wake) wake = detail::add_saturated(now, options_.event_poll);
-      if (detail::add_saturated(now, options_.max_sleep) < wake) wake = detail::add_saturated(now, options_.max_sleep);
-      if (deadline < wake) wake = deadline;
-      if (wake > now) sleep_until(origin + std::chrono::nanoseconds(static_cast<std::int64_t>((wake - base).count())));
+      now = clock_now();
+      LTIME wake = std::min(app_.next_release(), std::min(deadline, detail::add_saturated(now, options_.max_sleep)));
+      if (app_.has_event_tasks_) wake = std::min(wake, detail::add_saturated(now, options_.event_poll));
+      if (wake > now) sleep_until(origin_ + std::chrono::nanoseconds(static_cast<std::int64_t>((wake - base_).count())));
     }
   }
 
