@@ -38,6 +38,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/cycle_clock.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
+#include <iecoop/detail/ready_queues.hpp>
 #include <iecoop/detail/single_instance.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/interface.hpp>
@@ -413,8 +414,7 @@ class application {
       detail::lifecycle_scope exiting({true, false, false, false});
       store_.destroy_all();
     }
-    for (task_state& t : tasks_) t.clear_schedule();
-    running_ = no_task;
+    clear_schedules();
     faulted_task_ = nullptr;
     state_ = application_state::stopped;
   }
@@ -605,8 +605,8 @@ class application {
 
   // The tasks as after a download: no cycle under way, statistics and event memories cleared.
   void restart_tasks() noexcept {
+    clear_schedules();
     for (task_state& t : tasks_) {
-      t.clear_schedule();
       t.reset_statistics();
       t.watchdog_streak_ = 0;
       t.cycle_number_ = 0;
@@ -634,6 +634,7 @@ class application {
     task_state& t = tasks_[index];
     t.released_ = false;
     t.active_ = true;
+    ready_.begin(index, t.settings_.priority);
     t.start_time_ = now;
     t.remaining_ = t.cost_of(t.cycle_number_);
     ++t.cycle_number_;
@@ -658,6 +659,7 @@ class application {
   void end_cycle(std::size_t index, LTIME now) {
     task_state& t = tasks_[index];
     t.active_ = false;
+    ready_.end(t.settings_.priority);
     t.remaining_ = LTIME{};
     staged_outputs& staged = staged_[index];
     for (std::size_t b = 0; b < output_bytes; ++b) {
@@ -687,8 +689,7 @@ class application {
     if (t.watchdog_streak_ >= sensitivity || single_timeout) {
       state_ = application_state::exception;
       faulted_task_ = &t;
-      for (task_state& other : tasks_) other.clear_schedule();
-      running_ = no_task;
+      clear_schedules();
       fault(fault_kind::watchdog, "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
     }
   }
@@ -711,7 +712,7 @@ class application {
   void release_due(LTIME now) {
     for (task_state& t : tasks_) {
       if (t.settings_.kind == task_kind::event || t.next_release_ > now) continue;
-      release(t, t.next_release_);
+      release(static_cast<std::size_t>(&t - tasks_.data()), t.next_release_);
       if (t.settings_.kind == task_kind::cyclic) {
         t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
         if (t.next_release_ <= now) {  // releases missed while late: omitted
@@ -732,12 +733,13 @@ class application {
     for (task_state& t : tasks_) {
       if (t.settings_.kind != task_kind::event) continue;
       const bool value = static_cast<bool>(t.settings_.trigger.read());
-      if (value && !t.event_previous_) release(t, now);
+      if (value && !t.event_previous_) release(static_cast<std::size_t>(&t - tasks_.data()), now);
       t.event_previous_ = value;
     }
   }
 
-  static void release(task_state& t, LTIME at) noexcept {
+  void release(std::size_t index, LTIME at) noexcept {
+    task_state& t = tasks_[index];
     if (t.busy()) {
       ++t.statistics_.overruns;
       ++t.statistics_.consecutive_overruns;
@@ -746,30 +748,23 @@ class application {
     t.released_ = true;
     t.release_time_ = at;
     t.statistics_.consecutive_overruns = 0;
+    ready_.release(index, t.settings_.priority, [this](std::size_t a, std::size_t b) {
+      return tasks_[a].release_time_ < tasks_[b].release_time_ ||
+             (tasks_[a].release_time_ == tasks_[b].release_time_ && a < b);
+    });
   }
 
   /// The task that gets the processor: the highest priority among those released or under
-  /// way; among equals, one under way before one released, then the earlier release, then
-  /// the first in the configuration. no_task if none.
-  [[nodiscard]] std::size_t pick() const noexcept {
-    std::size_t best = no_task;
-    for (std::size_t i = 0; i < task_count_; ++i) {
-      const task_state& t = tasks_[i];
-      if (!t.busy()) continue;
-      if (best == no_task) {
-        best = i;
-        continue;
-      }
-      const task_state& b = tasks_[best];
-      if (t.settings_.priority != b.settings_.priority) {
-        if (t.settings_.priority < b.settings_.priority) best = i;
-      } else if (t.active_ != b.active_) {
-        if (t.active_) best = i;
-      } else if (t.release_time_ < b.release_time_) {
-        best = i;
-      }
-    }
-    return best;
+  /// way; among equals, the one under way before those released, then the earlier release,
+  /// then the first in the configuration. no_task if none. O(1): ready_ keeps the released
+  /// tasks of each priority in that order.
+  [[nodiscard]] std::size_t pick() const noexcept { return ready_.pick(); }
+
+  // Forget every release and cycle under way (a stop, a reset, an exception).
+  void clear_schedules() noexcept {
+    for (task_state& t : tasks_) t.clear_schedule();
+    ready_.clear();
+    running_ = no_task;
   }
 
   /// Everything that happens at now_: the running cycle ends if its time is used up, tasks
@@ -847,6 +842,7 @@ class application {
   storage_binding storage_{};
   LTIME now_{};
   std::size_t running_ = no_task;
+  detail::ready_queues<task_count_> ready_{};
   const task_state* faulted_task_ = nullptr;
   unsigned freewheeling_load_ = 80;
   bool has_event_tasks_ = false;

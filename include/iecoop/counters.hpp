@@ -23,6 +23,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/dialect.hpp>
 #include <iecoop/function_block.hpp>
 #include <iecoop/pins.hpp>
@@ -133,7 +134,7 @@ class up_counter : public function_block<up_counter<T, D>>,
 
   void body() noexcept {
     const bool up = CU && !cu_memory_;
-    cu_memory_ = CU;
+    detail::copy_value(cu_memory_, CU);
     if (this->reset_input()) {
       CV = T();
     } else if (up && CV.get() < limits::upper(PV)) {
@@ -170,7 +171,7 @@ class down_counter : public function_block<down_counter<T, D>>,
 
   void body() noexcept {
     const bool down = CD && !cd_memory_;
-    cd_memory_ = CD;
+    detail::copy_value(cd_memory_, CD);
     if (this->load_input()) {
       CV = PV;
     } else if (down && CV.get() > limits::lower()) {
@@ -213,8 +214,8 @@ class up_down_counter : public function_block<up_down_counter<T, D>>,
   void body() noexcept {
     const bool up = CU && !cu_memory_;
     const bool down = CD && !cd_memory_;
-    cu_memory_ = CU;
-    cd_memory_ = CD;
+    detail::copy_value(cu_memory_, CU);
+    detail::copy_value(cd_memory_, CD);
     if (this->reset_input()) {
       CV = T();
     } else if (this->load_input()) {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/dialect.hpp>
 #include <iecoop/function_block.hpp>
 #include <iecoop/pins.hpp>
@@ -37,7 +38,7 @@ class rising_edge_trigger : public function_block<rising_edge_trigger> {
 
   void body() noexcept {
     Q = CLK & !M_;
-    M_ = CLK;
+    detail::copy_value(M_, CLK);  // M_ := CLK, as a scalar store (detail/scalar_access.hpp)
   }
 
   BOOL M_;  // CLK at the previous call
@@ -59,7 +60,7 @@ class falling_edge_trigger : public function_block<falling_edge_trigger<D>> {
 
   void body() noexcept {
     Q = M_ & !CLK;
-    M_ = CLK;
+    detail::copy_value(M_, CLK);
   }
 
   // CLK at the previous call. Before the first call it is taken as TRUE where a first call

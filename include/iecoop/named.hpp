@@ -16,6 +16,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/fixed_string.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/time.hpp>
 #include <iecoop/types.hpp>
@@ -150,14 +151,14 @@ constexpr void assign_argument(Target& target, V&& value) {
       fault(fault_kind::invalid_value, "argument out of range for the parameter's IEC type; the low bytes are kept");
     }
     if constexpr (AnyDuration<Target>) {
-      target = Target::from_ticks(static_cast<rep>(value));
+      detail::copy_value(target, Target::from_ticks(static_cast<rep>(value)));
     } else {
-      target = Target(static_cast<rep>(value));
+      detail::copy_value(target, Target(static_cast<rep>(value)));
     }
   } else {
     static_assert(std::is_assignable_v<Target&, V&&>,
                   "iecoop: the argument's type does not convert to the parameter's type; convert it explicitly (e.g. DINT_TO_INT)");
-    target = std::forward<V>(value);
+    detail::assign_value(target, std::forward<V>(value));
   }
 }
 

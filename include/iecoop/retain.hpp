@@ -37,6 +37,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/detail/type_hash.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
@@ -210,23 +211,23 @@ class retained_variable {
   /// Assigns the value (a non-template operand, so that constants convert as in any
   /// assignment: `iCount = 5;`).
   Derived& operator=(const T& value) noexcept {
-    value_ = value;
+    detail::copy_value(value_, value);
     return self();
   }
   Derived& operator+=(const T& v) {
-    value_ = value_ + v;
+    detail::assign_value(value_, value_ + v);
     return self();
   }
   Derived& operator-=(const T& v) {
-    value_ = value_ - v;
+    detail::assign_value(value_, value_ - v);
     return self();
   }
   Derived& operator*=(const T& v) {
-    value_ = value_ * v;
+    detail::assign_value(value_, value_ * v);
     return self();
   }
   Derived& operator/=(const T& v) {
-    value_ = value_ / v;
+    detail::assign_value(value_, value_ / v);
     return self();
   }
   Derived& operator++() {

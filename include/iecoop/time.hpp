@@ -21,6 +21,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/float_to_int.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/types.hpp>
 
@@ -62,7 +63,7 @@ class basic_time {
   /// An integer constant counts ticks (TIME: milliseconds), as `PT := 300` does in CODESYS.
   /// Checked at compile time: it must be a non-negative constant that fits.
   template <detail::cpp_integer T>
-  consteval basic_time(T ticks) : ticks_(static_cast<Rep>(ticks)) {  // NOLINT
+  consteval basic_time(T ticks) : value_(static_cast<Rep>(ticks)) {  // NOLINT
     if (!std::in_range<Rep>(ticks)) {
       detail::compile_error("iecoop: duration constant out of range (TIME and LTIME are unsigned); use a T# literal or a std::chrono duration");
     }
@@ -74,7 +75,7 @@ class basic_time {
   template <std::integral R, class P>
     requires(std::ratio_divide<P, Period>::den == 1)
   constexpr basic_time(std::chrono::duration<R, P> d) noexcept  // NOLINT
-      : ticks_(static_cast<Rep>(static_cast<std::uint64_t>(d.count()) *
+      : value_(static_cast<Rep>(static_cast<std::uint64_t>(d.count()) *
                                 static_cast<std::uint64_t>(std::ratio_divide<P, Period>::num))) {}
 
   /// From another IEC duration: TIME -> LTIME is implicit (exact); LTIME -> TIME explicit
@@ -83,27 +84,27 @@ class basic_time {
     requires(!std::is_same_v<basic_time<R, P>, basic_time>)
   constexpr explicit(std::ratio_divide<P, Period>::den != 1 || sizeof(R) > sizeof(Rep))
       basic_time(basic_time<R, P> other) noexcept
-      : ticks_(static_cast<Rep>(scale<P>(static_cast<std::uint64_t>(other.count())))) {}
+      : value_(static_cast<Rep>(scale<P>(static_cast<std::uint64_t>(other.count())))) {}
 
   /// To std::chrono durations that lose no precision (the same rule std::chrono applies;
   /// as there, the range is yours to watch).
   template <class R, class P>
     requires(std::is_floating_point_v<R> || (std::integral<R> && std::ratio_divide<Period, P>::den == 1))
   constexpr operator std::chrono::duration<R, P>() const noexcept {  // NOLINT
-    return std::chrono::duration_cast<std::chrono::duration<R, P>>(chrono_type(ticks_));
+    return std::chrono::duration_cast<std::chrono::duration<R, P>>(chrono_type(value_));
   }
 
   /// The number of ticks: milliseconds for TIME, nanoseconds for LTIME.
-  [[nodiscard]] constexpr Rep count() const noexcept { return ticks_; }
+  [[nodiscard]] constexpr Rep count() const noexcept { return value_; }
   /// The same duration as a std::chrono duration.
-  [[nodiscard]] constexpr chrono_type chrono() const noexcept { return chrono_type(ticks_); }
+  [[nodiscard]] constexpr chrono_type chrono() const noexcept { return chrono_type(value_); }
 
   static constexpr basic_time zero() noexcept { return basic_time(); }
   static constexpr basic_time max() noexcept { return from_ticks(std::numeric_limits<Rep>::max()); }
   /// A duration of `ticks` ticks, wrapping (for a run-time tick count).
   static constexpr basic_time from_ticks(Rep ticks) noexcept {
     basic_time t;
-    t.ticks_ = ticks;
+    t.value_ = ticks;
     return t;
   }
 
@@ -116,7 +117,7 @@ class basic_time {
   template <detail::duration_factor N>
   friend constexpr basic_time operator*(basic_time a, N factor) noexcept {
     if constexpr (is_floating<N>()) {
-      return from_ticks(static_cast<Rep>(detail::round_to_int64(static_cast<long double>(a.ticks_) * as_long_double(factor))));
+      return from_ticks(static_cast<Rep>(detail::round_to_int64(static_cast<long double>(a.value_) * as_long_double(factor))));
     } else {
       return from_ticks(static_cast<Rep>(a.wide() * static_cast<wide_t>(as_int64(factor))));
     }
@@ -132,13 +133,13 @@ class basic_time {
     if constexpr (is_floating<N>()) {
       const long double d = as_long_double(divisor);
       if (d == 0) return divide_by_zero();
-      return from_ticks(static_cast<Rep>(detail::round_to_int64(static_cast<long double>(a.ticks_) / d)));
+      return from_ticks(static_cast<Rep>(detail::round_to_int64(static_cast<long double>(a.value_) / d)));
     } else {
       const std::int64_t d = as_int64(divisor);
       if (d == 0) return divide_by_zero();
-      if (d > 0) return from_ticks(static_cast<Rep>(a.ticks_ / static_cast<std::uint64_t>(d)));
+      if (d > 0) return from_ticks(static_cast<Rep>(a.value_ / static_cast<std::uint64_t>(d)));
       // A negative divisor: the quotient is negative and wraps like every TIME result.
-      return from_ticks(static_cast<Rep>(wide_t{0} - a.ticks_ / (wide_t{0} - static_cast<std::uint64_t>(d))));
+      return from_ticks(static_cast<Rep>(wide_t{0} - a.value_ / (wide_t{0} - static_cast<std::uint64_t>(d))));
     }
   }
   template <detail::duration_factor N>
@@ -150,13 +151,13 @@ class basic_time {
     return *this = *this / divisor;
   }
 
-  friend constexpr bool operator==(basic_time a, basic_time b) noexcept { return a.ticks_ == b.ticks_; }
-  friend constexpr std::strong_ordering operator<=>(basic_time a, basic_time b) noexcept { return a.ticks_ <=> b.ticks_; }
+  friend constexpr bool operator==(basic_time a, basic_time b) noexcept { return a.value_ == b.value_; }
+  friend constexpr std::strong_ordering operator<=>(basic_time a, basic_time b) noexcept { return a.value_ <=> b.value_; }
 
  private:
   using wide_t = std::uint64_t;  // arithmetic is done here and truncated: modular, no UB
 
-  constexpr wide_t wide() const noexcept { return ticks_; }
+  constexpr wide_t wide() const noexcept { return value_; }
 
   template <class P>
   static constexpr std::uint64_t scale(std::uint64_t ticks) noexcept {
@@ -190,8 +191,12 @@ class basic_time {
     return basic_time();
   }
 
-  Rep ticks_ = 0;
+  friend struct detail::scalar_access;
+  Rep value_ = 0;
 };
+
+template <class Rep, class Period>
+struct detail::is_scalar_wrapper<basic_time<Rep, Period>> : std::true_type {};
 
 /// IEC TIME as CODESYS stores it: unsigned 32-bit milliseconds.
 using TIME = basic_time<std::uint32_t, std::milli>;

@@ -18,13 +18,14 @@
 //     is FALSE (in the same call when IN is already FALSE then).
 //
 // Outputs are read-only from outside, as in ST. Each timer is as small as its state allows:
-// IN, Q, PT, ET, the start time and one byte of state (TOF: two), 16 bytes for TIME timers.
+// IN, Q, PT, ET, the start time and two bytes of state, 16 bytes for TIME timers.
 #pragma once
 
 #include <cstdint>
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/cycle_clock.hpp>
 #include <iecoop/dialect.hpp>
 #include <iecoop/function_block.hpp>
@@ -42,20 +43,33 @@ namespace detail {
 template <class Time>
 concept timer_time = std::is_same_v<Time, TIME> || std::is_same_v<Time, LTIME>;
 
-/// MatIEC's STATE: 0 reset, 1 counting, 2 expired.
-enum class timer_state : std::uint8_t { idle, running, expired };
+/// MatIEC's STATE — 0 reset (idle), 1 counting (running), 2 expired — as two flags. (Not a
+/// one-byte enum: that is a character type to GCC, which lets it alias every variable, so
+/// a loop calling a timer would keep all its variables in memory.)
+struct timer_state {
+  bool running = false;
+  bool expired = false;
 
-/// One call of a running timer (MatIEC's STATE = 1): it has expired once the time elapsed
-/// since `start` reaches PT, and ET is then PT; otherwise ET is the elapsed time.
-template <class Time>
-struct timer_progress {
-  bool expired;
-  Time et;
+  [[nodiscard]] constexpr bool idle() const noexcept { return !running && !expired; }
+  constexpr void reset() noexcept { running = expired = false; }
+  constexpr void start() noexcept { running = true; expired = false; }
+  constexpr void expire() noexcept { running = false; expired = true; }
 };
+
+/// One call of a running timer (MatIEC's STATE = 1): sets ET to the time elapsed since
+/// `start`, or to PT once that reaches PT — and then tells that the timer has expired.
+/// (ET is written here rather than returned with the flag in a struct: GCC 12 packs such a
+/// pair into one register and unpacks it again, even inlined.)
 template <class Time>
-timer_progress<Time> run_timer(Time start, Time pt) noexcept {
+bool run_timer(Time start, Time pt, Time& et) noexcept {
   const Time elapsed = cycle_clock::now_as<Time>() - start;
-  return elapsed >= pt ? timer_progress<Time>{true, pt} : timer_progress<Time>{false, elapsed};
+  // Scalar copies (detail/scalar_access.hpp): ET is a member of the timer.
+  if (elapsed >= pt) {
+    copy_value(et, pt);
+    return true;
+  }
+  copy_value(et, elapsed);
+  return false;
 }
 
 template <class Time>
@@ -80,7 +94,7 @@ class on_delay_timer : public function_block<on_delay_timer<Time>> {
   local<BOOL, on_delay_timer> Q;    ///< VAR_OUTPUT: TRUE while IN has been TRUE for at least PT
 
  private:
-  detail::timer_state state_ = detail::timer_state::idle;
+  detail::timer_state state_;
 
  public:
   Time PT;                    ///< VAR_INPUT: the delay
@@ -97,22 +111,19 @@ class on_delay_timer : public function_block<on_delay_timer<Time>> {
   friend struct block_access;
 
   void body() noexcept {
-    using detail::timer_state;
     // In state idle the previous IN was FALSE (a call with IN TRUE always leaves idle), so
     // MatIEC's PREV_IN needs no storage here: idle with IN TRUE is the rising edge.
     if (!IN) {
       ET = Time();
       Q = FALSE;
-      state_ = timer_state::idle;
-    } else if (state_ == timer_state::idle) {
-      state_ = timer_state::running;
+      state_.reset();
+    } else if (state_.idle()) {
+      state_.start();
       Q = FALSE;
-      start_ = cycle_clock::now_as<Time>();
-    } else if (state_ == timer_state::running) {
-      const auto progress = detail::run_timer(start_, PT);
-      ET = progress.et;
-      if (progress.expired) {
-        state_ = timer_state::expired;
+      detail::copy_value(start_, cycle_clock::now_as<Time>());
+    } else if (state_.running) {
+      if (detail::run_timer(start_, PT, ET.ref())) {
+        state_.expire();
         Q = TRUE;
       }
     }
@@ -132,7 +143,7 @@ class off_delay_timer : public function_block<off_delay_timer<Time>> {
   local<BOOL, off_delay_timer> Q;   ///< VAR_OUTPUT: IN, held for PT after IN falls
 
  private:
-  detail::timer_state state_ = detail::timer_state::idle;
+  bool running_ = false;
   bool prev_in_ = false;
 
  public:
@@ -149,22 +160,22 @@ class off_delay_timer : public function_block<off_delay_timer<Time>> {
  private:
   friend struct block_access;
 
+  // MatIEC's STATE 2 (expired) behaves as STATE 0 here: with IN FALSE neither does
+  // anything (the previous IN is FALSE too), and IN TRUE resets both; so only "running" is
+  // kept.
   void body() noexcept {
-    using detail::timer_state;
     if (IN) {
       ET = Time();
-      state_ = timer_state::idle;
-    } else if (state_ == timer_state::idle) {
+      running_ = false;
+    } else if (!running_) {
       if (prev_in_) {  // falling edge
-        state_ = timer_state::running;
-        start_ = cycle_clock::now_as<Time>();
+        running_ = true;
+        detail::copy_value(start_, cycle_clock::now_as<Time>());
       }
-    } else if (state_ == timer_state::running) {
-      const auto progress = detail::run_timer(start_, PT);
-      ET = progress.et;
-      if (progress.expired) state_ = timer_state::expired;
+    } else if (detail::run_timer(start_, PT, ET.ref())) {
+      running_ = false;
     }
-    Q = IN || state_ == timer_state::running;
+    Q = IN || running_;
     prev_in_ = static_cast<bool>(IN);
   }
 };
@@ -183,7 +194,7 @@ class pulse_timer : public function_block<pulse_timer<Time>> {
   local<BOOL, pulse_timer> Q;     ///< VAR_OUTPUT: the pulse_timer
 
  private:
-  detail::timer_state state_ = detail::timer_state::idle;
+  detail::timer_state state_;
 
  public:
   Time PT;                  ///< VAR_INPUT: the pulse's length
@@ -200,25 +211,22 @@ class pulse_timer : public function_block<pulse_timer<Time>> {
   friend struct block_access;
 
   void body() noexcept {
-    using detail::timer_state;
     // As for TON, idle implies the previous IN was FALSE: idle with IN TRUE is the edge.
-    if (state_ == timer_state::idle) {
+    if (state_.idle()) {
       if (IN) {
-        state_ = timer_state::running;
+        state_.start();
         Q = TRUE;
-        start_ = cycle_clock::now_as<Time>();
+        detail::copy_value(start_, cycle_clock::now_as<Time>());
       }
-    } else if (state_ == timer_state::running) {
-      const auto progress = detail::run_timer(start_, PT);
-      ET = progress.et;
-      if (progress.expired) {
-        state_ = timer_state::expired;
+    } else if (state_.running) {
+      if (detail::run_timer(start_, PT, ET.ref())) {
+        state_.expire();
         Q = FALSE;
       }
     }
-    if (state_ == timer_state::expired && !IN) {
+    if (state_.expired && !IN) {
       ET = Time();
-      state_ = timer_state::idle;
+      state_.reset();
     }
   }
 };

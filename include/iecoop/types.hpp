@@ -21,6 +21,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/fault.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -43,21 +44,35 @@ class BOOL {
   template <std::same_as<bool> B>
   constexpr BOOL(B value) noexcept : value_(value) {}  // NOLINT: implicit like ST's assignment
 
+  /// `b = x > 3;` stores the bool as it is (the same as `b = BOOL(x > 3)`, but a plain
+  /// store of the member: see detail/scalar_access.hpp).
+  template <std::same_as<bool> B>
+  constexpr BOOL& operator=(B value) noexcept {
+    value_ = value;
+    return *this;
+  }
+
   explicit constexpr operator bool() const noexcept { return value_; }
 
-  friend constexpr bool operator==(BOOL a, BOOL b) noexcept { return a.value_ == b.value_; }
-  friend constexpr std::strong_ordering operator<=>(BOOL a, BOOL b) noexcept { return a.value_ <=> b.value_; }
-  friend constexpr BOOL operator!(BOOL a) noexcept { return BOOL(!a.value_); }
-  friend constexpr BOOL operator&(BOOL a, BOOL b) noexcept { return BOOL(a.value_ && b.value_); }
-  friend constexpr BOOL operator|(BOOL a, BOOL b) noexcept { return BOOL(a.value_ || b.value_); }
-  friend constexpr BOOL operator^(BOOL a, BOOL b) noexcept { return BOOL(a.value_ != b.value_); }
+  // The operands are references: a BOOL passed by value is, for GCC 12, a byte copied as
+  // `unsigned char`, which may alias anything and so keeps a loop's variables in memory.
+  friend constexpr bool operator==(const BOOL& a, const BOOL& b) noexcept { return a.value_ == b.value_; }
+  friend constexpr std::strong_ordering operator<=>(const BOOL& a, const BOOL& b) noexcept { return a.value_ <=> b.value_; }
+  friend constexpr BOOL operator!(const BOOL& a) noexcept { return BOOL(!a.value_); }
+  friend constexpr BOOL operator&(const BOOL& a, const BOOL& b) noexcept { return BOOL(a.value_ && b.value_); }
+  friend constexpr BOOL operator|(const BOOL& a, const BOOL& b) noexcept { return BOOL(a.value_ || b.value_); }
+  friend constexpr BOOL operator^(const BOOL& a, const BOOL& b) noexcept { return BOOL(a.value_ != b.value_); }
   constexpr BOOL& operator&=(BOOL b) noexcept { return *this = *this & b; }
   constexpr BOOL& operator|=(BOOL b) noexcept { return *this = *this | b; }
   constexpr BOOL& operator^=(BOOL b) noexcept { return *this = *this ^ b; }
 
  private:
+  friend struct detail::scalar_access;
   bool value_ = false;
 };
+
+template <>
+struct detail::is_scalar_wrapper<BOOL> : std::true_type {};
 
 inline constexpr BOOL TRUE{true};
 inline constexpr BOOL FALSE{false};
@@ -252,8 +267,12 @@ class integer {
     return integer();
   }
 
+  friend struct detail::scalar_access;
   Rep value_ = 0;
 };
+
+template <class Rep, integer_kind Kind>
+struct detail::is_scalar_wrapper<integer<Rep, Kind>> : std::true_type {};
 
 namespace detail {
 /// Two IEC integer types neither of which widens implicitly to the other (INT and UINT,
@@ -358,8 +377,12 @@ class real {
   constexpr real& operator/=(Rep b) noexcept { value_ /= b; return *this; }
 
  private:
+  friend struct detail::scalar_access;
   Rep value_ = 0;
 };
+
+template <class Rep>
+struct detail::is_scalar_wrapper<real<Rep>> : std::true_type {};
 
 using REAL = real<float>;
 using LREAL = real<double>;

@@ -14,6 +14,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
+#include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 
@@ -63,7 +64,7 @@ constexpr void deliver_output(Target& target, const V& value) {
   auto& variable = output_target(target);
   static_assert(std::is_assignable_v<decltype(variable), const V&>,
                 "iecoop: the output does not convert to the variable after =>; give the variable the output's type");
-  variable = value;
+  assign_value(variable, value);
 }
 
 }  // namespace detail
@@ -104,25 +105,27 @@ class local {
   friend struct detail::local_access;
 
   constexpr local& operator=(const local&) = default;  // Owner's own copies (online change)
+  // Values are copied as scalars (detail/scalar_access.hpp), so that the optimiser sees
+  // plain loads and stores.
   constexpr local& operator=(const T& value) {
-    value_ = value;
+    detail::copy_value(value_, value);
     return *this;
   }
   // Non-template operands, so that constants convert as in any assignment (`count += 1`).
   constexpr local& operator+=(const T& v) {
-    value_ = value_ + v;
+    detail::assign_value(value_, value_ + v);
     return *this;
   }
   constexpr local& operator-=(const T& v) {
-    value_ = value_ - v;
+    detail::assign_value(value_, value_ - v);
     return *this;
   }
   constexpr local& operator*=(const T& v) {
-    value_ = value_ * v;
+    detail::assign_value(value_, value_ * v);
     return *this;
   }
   constexpr local& operator/=(const T& v) {
-    value_ = value_ / v;
+    detail::assign_value(value_, value_ / v);
     return *this;
   }
   constexpr local& operator++() {
@@ -181,14 +184,14 @@ class in_out {
   constexpr const in_out& operator=(const value_type& value) const
     requires(!std::is_const_v<T>)
   {
-    get() = value;
+    detail::copy_value(get(), value);
     return *this;
   }
   /// ST's `a := b`: copies b's value into a's variable. While an online change copies the
   /// block that holds it, nothing happens: the new instance keeps its own binding.
   constexpr in_out& operator=(const in_out& other) {
     if constexpr (!std::is_const_v<T>) {
-      if (!detail::current_lifecycle.relocating) get() = other.get();
+      if (!detail::current_lifecycle.relocating) detail::copy_value(get(), other.get());
     }
     return *this;
   }
@@ -241,7 +244,7 @@ class output {
   }
 
   constexpr output& operator=(const T& value) {
-    value_ = value;
+    detail::copy_value(value_, value);
     return *this;
   }
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
