@@ -1,0 +1,135 @@
+// Repeats one benchmark kernel n times, for instruction counts under callgrind
+// (bench/callgrind.sh runs it twice with different n and divides the difference, so that
+// start-up and the cross-check are not counted):
+//
+//   iecoop_bench_count <kernel> <n>       iecoop_bench_count --list
+//
+// Kernels: the workload's scans (workload.hpp), the micro-benchmarks' steps (kernels.hpp)
+// and the scheduler's task cycles (one iteration = 1 ms of simulated time).
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <utility>
+
+#include "kernels.hpp"
+#include "scheduler_programs.hpp"
+#include "workload.hpp"
+
+namespace {
+
+// Makes the compiler assume that memory was read and written here.
+inline void barrier() { asm volatile("" ::: "memory"); }
+template <class T>
+inline void keep(T& value) {
+  asm volatile("" : : "r,m"(&value) : "memory");
+}
+
+template <class Side>
+void workload_scans(std::uint64_t n) {
+  Side::reset();
+  for (std::uint64_t k = 0; k < n; ++k) Side::scan(static_cast<std::uint32_t>(k));
+}
+struct iecoop_scan {
+  static void reset() { workload::iecoop_side::reset(); }
+  static void scan(std::uint32_t k) { workload::iecoop_side::scan(k); }
+};
+struct handwritten_scan {
+  static void reset() { workload::handwritten_side::reset(); }
+  static void scan(std::uint32_t k) { workload::handwritten_side::scan(k); }
+};
+struct minimal_scan {
+  static void reset() { workload::minimal_side::reset(); }
+  static void scan(std::uint32_t k) { workload::minimal_side::scan(k); }
+};
+
+template <class Object, class Step>
+void repeat(std::uint64_t n, Step step) {
+  Object object{};
+  for (std::uint64_t i = 0; i < n; ++i) {
+    step(object);
+    barrier();
+  }
+  keep(object);
+}
+
+template <std::size_t N>
+void task_cycles(std::uint64_t n) {
+  auto plc = scheduler_programs::tasks_of_empty_program(std::make_index_sequence<N>{});
+  plc.start();
+  for (std::uint64_t i = 0; i < n; ++i) plc.run_for(iecoop::LTIME(iecoop::TIME(1)));
+}
+template <std::size_t N>
+void handwritten_task_cycles(std::uint64_t n) {
+  scheduler_programs::handwritten_executive<N> executive;
+  for (std::uint64_t i = 0; i < n; ++i) executive.run_for(1'000'000);
+}
+
+struct kernel {
+  const char* name;
+  void (*run)(std::uint64_t n);
+};
+
+using namespace kernels;
+const kernel all_kernels[] = {
+    {"workload_iecoop", workload_scans<iecoop_scan>},
+    {"workload_handwritten", workload_scans<handwritten_scan>},
+    {"workload_handwritten_minimal", workload_scans<minimal_scan>},
+    {"property_iecoop", [](std::uint64_t n) { repeat<FB_Prop>(n, [](FB_Prop& fb) { property_iecoop(fb); }); }},
+    {"property_handwritten", [](std::uint64_t n) { repeat<plain_prop>(n, [](plain_prop& s) { property_handwritten(s); }); }},
+    {"method_iecoop", [](std::uint64_t n) { repeat<FB_Scale>(n, [](FB_Scale& fb) { (void)method_iecoop(fb); }); }},
+    {"method_handwritten", [](std::uint64_t n) { repeat<plain_scale>(n, [](plain_scale& s) { (void)method_handwritten(s); }); }},
+    {"fbcall_iecoop", [](std::uint64_t n) { repeat<FB_Add>(n, [](FB_Add& fb) { (void)fbcall_iecoop(fb, INT(1)); }); }},
+    {"fbcall_handwritten", [](std::uint64_t n) { repeat<plain_add>(n, [](plain_add& s) { (void)fbcall_handwritten(s, INT(1)); }); }},
+    {"interface_iecoop", [](std::uint64_t n) {
+       FB_MathMen fb;
+       itf<I_Math> ip = fb;
+       for (std::uint64_t i = 0; i < n; ++i) {
+         keep(ip);
+         (void)interface_iecoop(ip);
+       }
+     }},
+    {"interface_virtual", [](std::uint64_t n) {
+       plain_math m;
+       plain_math_base* b = &m;
+       for (std::uint64_t i = 0; i < n; ++i) {
+         keep(b);
+         (void)interface_virtual(*b);
+       }
+     }},
+    {"interface_direct", [](std::uint64_t n) {
+       plain_math m;
+       plain_math* p = &m;
+       for (std::uint64_t i = 0; i < n; ++i) {
+         keep(p);
+         (void)interface_direct(*p);
+       }
+     }},
+    {"task_cycle_1", task_cycles<1>},
+    {"task_cycle_8", task_cycles<8>},
+    {"task_cycle_32", task_cycles<32>},
+    {"task_cycle_handwritten_1", handwritten_task_cycles<1>},
+    {"task_cycle_handwritten_8", handwritten_task_cycles<8>},
+    {"task_cycle_handwritten_32", handwritten_task_cycles<32>},
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 2 && std::strcmp(argv[1], "--list") == 0) {
+    for (const kernel& k : all_kernels) std::printf("%s\n", k.name);
+    return 0;
+  }
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: iecoop_bench_count <kernel> <n> | --list\n");
+    return 2;
+  }
+  for (const kernel& k : all_kernels) {
+    if (std::strcmp(argv[1], k.name) == 0) {
+      k.run(std::strtoull(argv[2], nullptr, 10));
+      return 0;
+    }
+  }
+  std::fprintf(stderr, "iecoop_bench_count: no kernel %s (see --list)\n", argv[1]);
+  return 2;
+}
