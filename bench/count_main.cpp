@@ -46,6 +46,7 @@ struct minimal_scan {
 template <class Object, class Step>
 void repeat(std::uint64_t n, Step step) {
   Object object{};
+  keep(object);  // in memory, as a block instance is
   for (std::uint64_t i = 0; i < n; ++i) {
     step(object);
     barrier();

@@ -49,7 +49,16 @@ class single_instance {
       fault(Duplicate, "a PROGRAM or global variable list has exactly one instance; this one is not registered");
       return;
     }
+    // The destructor takes the registration back; GCC 12 at -O3 does not see that for an
+    // instance that is a local variable (an application in a function) and warns.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdangling-pointer"
+#endif
     live_ = static_cast<Self*>(this);
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#pragma GCC diagnostic pop
+#endif
   }
   single_instance(const single_instance&) noexcept {}  // a copy is not the instance
   single_instance& operator=(const single_instance&) noexcept { return *this; }
