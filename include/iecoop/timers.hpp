@@ -21,7 +21,6 @@
 // IN, Q, PT, ET, the start time and two bytes of state, 16 bytes for TIME timers.
 #pragma once
 
-#include <cstdint>
 #include <type_traits>
 
 #include <iecoop/config.hpp>
