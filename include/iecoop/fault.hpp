@@ -10,8 +10,10 @@
 #pragma once
 
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
+#if !defined(IECOOP_NO_STDIO)
+#  include <cstdio>
+#endif
 
 #include <iecoop/config.hpp>
 
@@ -58,13 +60,20 @@ using fault_handler = void (*)(const fault_info&);
 
 /// The handler installed at start-up: prints "iecoop fault: <kind>: <message>" on stderr
 /// and aborts the program, as a PLC stops on an exception.
-[[noreturn]] inline void default_fault_handler(const fault_info& fault) {
-  // fputs rather than fprintf: on a microcontroller this keeps printf's formatting code out.
+///
+/// With IECOOP_NO_STDIO defined (firmware without a console, see docs/embedded.md) it only
+/// aborts. Being the handler's initial value, this function is linked into every program
+/// that can fault, even one that installs its own handler first thing; on a microcontroller
+/// its stderr would bring the C library's stream buffers, and with them malloc.
+[[noreturn]] inline void default_fault_handler([[maybe_unused]] const fault_info& fault) {
+#if !defined(IECOOP_NO_STDIO)
+  // fputs rather than fprintf: no formatting code.
   std::fputs("iecoop fault: ", stderr);
   std::fputs(to_string(fault.kind), stderr);
   std::fputs(": ", stderr);
   std::fputs(fault.message, stderr);
   std::fputs("\n", stderr);
+#endif
   std::abort();
 }
 

@@ -445,9 +445,11 @@ inline std::size_t save_retained(std::span<const retained_object> objects, retai
           "the RETAIN/PERSISTENT image does not fit the buffer; size it with retained_image_size");
     return 0;
   }
-  if (static_cast<std::uint64_t>(needed) > 0xFFFFFFFFU) {
-    fault(fault_kind::invalid_value, "the RETAIN/PERSISTENT image exceeds 4 GiB");
-    return 0;
+  if constexpr (sizeof(std::size_t) > 4) {  // a 32-bit target cannot hold more (and GCC warns the test is always false)
+    if (needed > 0xFFFFFFFFU) {
+      fault(fault_kind::invalid_value, "the RETAIN/PERSISTENT image exceeds 4 GiB");
+      return 0;
+    }
   }
   std::size_t position = retain_image_header_size;
   std::uint64_t sections = 0;
