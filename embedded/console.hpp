@@ -1,0 +1,97 @@
+// embedded/console.hpp — how the firmware examples print their result: whole lines of text,
+// integers, IEC values, with no printf and no buffer beyond one number's digits.
+//
+// On the target the text goes out through semihosting (the host's stdout under QEMU); built
+// for the host, the same example writes to stdout, so both builds of an example can be
+// checked against the same expected output.
+#pragma once
+
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include <iecoop/time.hpp>
+#include <iecoop/types.hpp>
+
+#if defined(__arm__)
+#include "semihosting.hpp"
+#else
+#include <cstdio>
+#endif
+
+namespace firmware {
+
+inline void put(std::string_view text) noexcept {
+#if defined(__arm__)
+  semihosting::write(text);
+#else
+  std::fwrite(text.data(), 1, text.size(), stdout);
+#endif
+}
+
+inline void put(const char* text) noexcept { put(std::string_view(text)); }
+
+/// A C++ integer in decimal.
+template <std::integral I>
+  requires(!std::same_as<I, bool> && !std::same_as<I, char>)
+void put(I value) noexcept {
+  // Work on the magnitude as unsigned, so that the most negative value prints too.
+  using U = std::make_unsigned_t<I>;
+  U magnitude = static_cast<U>(value);
+  bool negative = false;
+  if constexpr (std::signed_integral<I>) {
+    if (value < 0) {
+      negative = true;
+      magnitude = static_cast<U>(U{0} - magnitude);
+    }
+  }
+  char digits[24];
+  std::size_t first = sizeof digits;
+  do {
+    digits[--first] = static_cast<char>('0' + static_cast<int>(magnitude % 10U));
+    magnitude = static_cast<U>(magnitude / 10U);
+  } while (magnitude != 0);
+  if (negative) digits[--first] = '-';
+  put(std::string_view(digits + first, sizeof digits - first));
+}
+
+/// An IEC integer (INT, DINT, WORD, ...) in decimal.
+template <class Rep, iecoop::integer_kind Kind>
+void put(iecoop::integer<Rep, Kind> value) noexcept {
+  put(value.value());
+}
+
+/// BOOL as ST writes it.
+inline void put(iecoop::BOOL value) noexcept { put(static_cast<bool>(value) ? "TRUE" : "FALSE"); }
+
+/// TIME in milliseconds, with its unit: `1500ms`.
+inline void put(iecoop::TIME value) noexcept {
+  put(value.count());
+  put("ms");
+}
+
+/// REAL with three decimals, rounded, for magnitudes below 4,000,000 (the examples only print
+/// small values that are exact in binary, so host and target agree digit for digit).
+/// Formatting floats through printf or std::to_chars would link far more code than the
+/// examples themselves; a 64-bit conversion would bring libgcc's double arithmetic.
+inline void put(iecoop::REAL value) noexcept {
+  const float x = value.value();
+  const float magnitude = x < 0.0F ? -x : x;
+  const auto thousandths = static_cast<std::uint32_t>(magnitude * 1000.0F + 0.5F);
+  if (x < 0.0F) put("-");
+  put(thousandths / 1000U);
+  const auto fraction = static_cast<unsigned>(thousandths % 1000U);
+  const char decimals[4] = {'.', static_cast<char>('0' + fraction / 100U), static_cast<char>('0' + fraction / 10U % 10U),
+                            static_cast<char>('0' + fraction % 10U)};
+  put(std::string_view(decimals, sizeof decimals));
+}
+
+/// One line: the parts one after the other, then a newline.
+template <class... Parts>
+void print_line(const Parts&... parts) noexcept {
+  (put(parts), ...);
+  put("\n");
+}
+
+}  // namespace firmware
