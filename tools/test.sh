@@ -5,11 +5,21 @@
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
 # tests, the compile-fail checks, the header self-containment and -fno-exceptions -fno-rtti
 # checks, the examples and the consumer projects (find_package and add_subdirectory).
-# Installs the Debian packages it needs first.
+#   3. the firmware examples for Cortex-M3 and Cortex-M4F (CMake presets cortex-m3 and
+#      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
+#      (CTest label `embedded`; see docs/embedded.md).
+# Installs the Debian packages it needs first, the cross toolchain and QEMU included; if they
+# cannot be installed, it fails.
 set -eu
 cd "$(dirname "$0")/.."
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ clang doctest-dev libfmt-dev libbenchmark-dev
+# The slim set of docs/embedded.md: the firmware links with arm-none-eabi-gcc and needs
+# neither libstdc++-arm-none-eabi-newlib's 1.5 GB of libraries nor QEMU's recommends.
+iecoop_require_packages gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
+for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm; do
+  command -v "$tool" >/dev/null 2>&1 || { echo "iecoop: $tool is missing: the firmware tests cannot run" >&2; exit 1; }
+done
 
 jobs=$(nproc 2>/dev/null || echo 2)
 
@@ -23,6 +33,16 @@ run() {
   ctest --test-dir "build/$name" -j "$jobs" --output-on-failure
 }
 
+# A firmware build: the toolchain, flags and board come from the preset (CMakePresets.json).
+firmware() {
+  echo "== iecoop: $1 firmware under QEMU"
+  cmake --preset "$1"
+  cmake --build --preset "$1"
+  ctest --preset "$1"
+}
+
 run gcc-sanitize g++ -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DIECOOP_SANITIZE=address;undefined"
 run clang clang++ -DCMAKE_BUILD_TYPE=Release
+firmware cortex-m3
+firmware cortex-m4f
 echo "== iecoop: all tests passed"
