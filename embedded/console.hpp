@@ -1,5 +1,5 @@
 // embedded/console.hpp — how the firmware examples print their result: whole lines of text,
-// integers, IEC values, with no printf and no buffer beyond one number's digits.
+// integers, IEC values, with no printf and no buffer beyond one value's text.
 //
 // On the target the text goes out through semihosting (the host's stdout under QEMU); built
 // for the host, the same example writes to stdout, so both builds of an example can be
@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include <iecoop/text.hpp>
 #include <iecoop/time.hpp>
 #include <iecoop/types.hpp>
 
@@ -32,38 +33,30 @@ inline void put(std::string_view text) noexcept {
 
 inline void put(const char* text) noexcept { put(std::string_view(text)); }
 
-/// A C++ integer in decimal.
+/// An IEC integer (INT, DINT, WORD, ...) or BOOL as ST writes it: iecoop::to_text, on the stack.
+template <class T>
+  requires(iecoop::AnyInteger<T> || std::same_as<T, iecoop::BOOL>)
+void put(T value) noexcept {
+  char text[iecoop::max_text_length<T>];
+  put(std::string_view(text, static_cast<std::size_t>(iecoop::to_text(text, value) - text)));
+}
+
+/// A C++ integer in decimal, as the IEC integer of its signedness and (at least 32-bit) width.
 template <std::integral I>
   requires(!std::same_as<I, bool> && !std::same_as<I, char>)
 void put(I value) noexcept {
-  // Work on the magnitude as unsigned, so that the most negative value prints too.
-  using U = std::make_unsigned_t<I>;
-  U magnitude = static_cast<U>(value);
-  bool negative = false;
   if constexpr (std::signed_integral<I>) {
-    if (value < 0) {
-      negative = true;
-      magnitude = static_cast<U>(U{0} - magnitude);
+    if constexpr (sizeof(I) <= 4) {
+      put(iecoop::DINT(static_cast<std::int32_t>(value)));
+    } else {
+      put(iecoop::LINT(static_cast<std::int64_t>(value)));
     }
+  } else if constexpr (sizeof(I) <= 4) {
+    put(iecoop::UDINT(static_cast<std::uint32_t>(value)));
+  } else {
+    put(iecoop::ULINT(static_cast<std::uint64_t>(value)));
   }
-  char digits[24];
-  std::size_t first = sizeof digits;
-  do {
-    digits[--first] = static_cast<char>('0' + static_cast<int>(magnitude % 10U));
-    magnitude = static_cast<U>(magnitude / 10U);
-  } while (magnitude != 0);
-  if (negative) digits[--first] = '-';
-  put(std::string_view(digits + first, sizeof digits - first));
 }
-
-/// An IEC integer (INT, DINT, WORD, ...) in decimal.
-template <class Rep, iecoop::integer_kind Kind>
-void put(iecoop::integer<Rep, Kind> value) noexcept {
-  put(value.value());
-}
-
-/// BOOL as ST writes it.
-inline void put(iecoop::BOOL value) noexcept { put(static_cast<bool>(value) ? "TRUE" : "FALSE"); }
 
 /// TIME in milliseconds, with its unit: `1500ms`.
 inline void put(iecoop::TIME value) noexcept {

@@ -514,12 +514,15 @@ constexpr char* write(char* out, std::string_view s) noexcept {
   for (const char c : s) *out++ = c;
   return out;
 }
-constexpr char* write_unsigned(char* out, std::uint64_t v) noexcept {
-  char digits[20];
+// In the value's own width: on a 32-bit microcontroller an INT or DINT then needs no 64-bit
+// division (libgcc's __aeabi_uldivmod).
+template <std::unsigned_integral U>
+constexpr char* write_unsigned(char* out, U v) noexcept {
+  char digits[std::numeric_limits<U>::digits10 + 1];
   std::size_t n = 0;
   do {
-    digits[n++] = static_cast<char>('0' + v % 10);
-    v /= 10;
+    digits[n++] = static_cast<char>('0' + v % 10U);
+    v = static_cast<U>(v / 10U);
   } while (v != 0);
   while (n > 0) *out++ = digits[--n];
   return out;
@@ -546,14 +549,15 @@ constexpr char* write_duration(char* out, std::uint64_t ns, std::size_t smallest
 /// Decimal text: `-32768`, `255`.
 template <AnyInteger T>
 constexpr char* to_text(char* out, T value) noexcept {
+  using U = std::make_unsigned_t<typename T::rep>;
   const auto v = value.value();
   if constexpr (std::is_signed_v<typename T::rep>) {
     if (v < 0) {
       *out++ = '-';
-      return detail::write_unsigned(out, std::uint64_t{0} - static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+      return detail::write_unsigned(out, static_cast<U>(U{0} - static_cast<U>(v)));  // the magnitude, -32768 too
     }
   }
-  return detail::write_unsigned(out, static_cast<std::uint64_t>(v));
+  return detail::write_unsigned(out, static_cast<U>(v));
 }
 /// `TRUE` or `FALSE`.
 constexpr char* to_text(char* out, BOOL value) noexcept { return detail::write(out, value ? "TRUE" : "FALSE"); }
