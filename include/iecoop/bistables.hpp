@@ -23,7 +23,7 @@ class set_dominant_latch : public function_block<set_dominant_latch> {
  public:
   BOOL S1;                       ///< VAR_INPUT: set (dominant)
   BOOL R;                        ///< VAR_INPUT: reset
-  local<BOOL, set_dominant_latch> Q1;  ///< VAR_OUTPUT: the stored bit
+  read_only<BOOL, set_dominant_latch> Q1;  ///< VAR_OUTPUT: the stored bit
 
   using VAR_INPUT = pins<&set_dominant_latch::S1, &set_dominant_latch::R>;
   using VAR_OUTPUT = pins<&set_dominant_latch::Q1>;
@@ -39,7 +39,7 @@ class reset_dominant_latch : public function_block<reset_dominant_latch> {
  public:
   BOOL S;                          ///< VAR_INPUT: set
   BOOL R1;                         ///< VAR_INPUT: reset (dominant)
-  local<BOOL, reset_dominant_latch> Q1;  ///< VAR_OUTPUT: the stored bit
+  read_only<BOOL, reset_dominant_latch> Q1;  ///< VAR_OUTPUT: the stored bit
 
   using VAR_INPUT = pins<&reset_dominant_latch::S, &reset_dominant_latch::R1>;
   using VAR_OUTPUT = pins<&reset_dominant_latch::Q1>;

@@ -45,6 +45,14 @@ template <class T>
 constexpr auto as_elementary(const T& x) noexcept {
   if constexpr (AnyElementary<T>) {
     return x;
+  } else if constexpr (Intermediate<T>) {
+    // An intermediate result converts from its whole register (TO_WORD(w + 1) cuts it).
+    using reg = typename T::rep;
+    if constexpr (std::is_signed_v<reg>) {
+      return integer<reg, integer_kind::signed_int>(x.value());
+    } else {
+      return integer<reg, integer_kind::unsigned_int>(x.value());
+    }
   } else if constexpr (std::is_same_v<T, bool>) {
     return BOOL(x);
   } else if constexpr (std::is_floating_point_v<T>) {
@@ -196,6 +204,14 @@ template <class To, class From>
 template <class From, class To>
 struct conversion {
   constexpr To operator()(From x) const noexcept { return convert<To>(x); }
+  /// An intermediate result of From (or of a type narrower than From) converts from its whole
+  /// register, as the conversion of a temporary result does in CODESYS (INT_TO_DINT(i + 1) is
+  /// 32768 for i = 32767; WORD_TO_BYTE(w + 1) cuts to 8 bits).
+  template <class N>
+    requires(AnyInteger<From> && detail::widens_implicitly<N, From>)
+  constexpr To operator()(intermediate<N> x) const noexcept {
+    return convert<To>(x);
+  }
 };
 /// STRING_TO_<To> and WSTRING_TO_<To> take strings of any capacity and literals.
 template <class C, std::size_t N, class To>

@@ -116,14 +116,14 @@ class up_counter : public function_block<up_counter<T, D>>,
 
  public:
   BOOL CU;                      ///< VAR_INPUT: counts up on its rising edge
-  local<BOOL, up_counter> Q;    ///< VAR_OUTPUT: CV >= PV
+  read_only<BOOL, up_counter> Q;    ///< VAR_OUTPUT: CV >= PV
 
  private:
   BOOL cu_memory_;
 
  public:
   T PV;                         ///< VAR_INPUT: the preset
-  local<T, up_counter> CV;      ///< VAR_OUTPUT: the count
+  read_only<T, up_counter> CV;      ///< VAR_OUTPUT: the count
 
   using VAR_INPUT = pins<&up_counter::CU, reset_base::pin, &up_counter::PV>;
   using VAR_OUTPUT = pins<&up_counter::Q, &up_counter::CV>;
@@ -153,14 +153,14 @@ class down_counter : public function_block<down_counter<T, D>>,
 
  public:
   BOOL CD;                      ///< VAR_INPUT: counts down on its rising edge
-  local<BOOL, down_counter> Q;  ///< VAR_OUTPUT: CV <= 0
+  read_only<BOOL, down_counter> Q;  ///< VAR_OUTPUT: CV <= 0
 
  private:
   BOOL cd_memory_;
 
  public:
   T PV;                         ///< VAR_INPUT: the value LD loads
-  local<T, down_counter> CV;    ///< VAR_OUTPUT: the count
+  read_only<T, down_counter> CV;    ///< VAR_OUTPUT: the count
 
   using VAR_INPUT = pins<&down_counter::CD, load_base::pin, &down_counter::PV>;
   using VAR_OUTPUT = pins<&down_counter::Q, &down_counter::CV>;
@@ -193,8 +193,8 @@ class up_down_counter : public function_block<up_down_counter<T, D>>,
  public:
   BOOL CU;                          ///< VAR_INPUT: counts up on its rising edge
   BOOL CD;                          ///< VAR_INPUT: counts down on its rising edge
-  local<BOOL, up_down_counter> QU;  ///< VAR_OUTPUT: CV >= PV
-  local<BOOL, up_down_counter> QD;  ///< VAR_OUTPUT: CV <= 0
+  read_only<BOOL, up_down_counter> QU;  ///< VAR_OUTPUT: CV >= PV
+  read_only<BOOL, up_down_counter> QD;  ///< VAR_OUTPUT: CV <= 0
 
  private:
   BOOL cu_memory_;
@@ -202,7 +202,7 @@ class up_down_counter : public function_block<up_down_counter<T, D>>,
 
  public:
   T PV;                             ///< VAR_INPUT: the preset, and the value LD loads
-  local<T, up_down_counter> CV;     ///< VAR_OUTPUT: the count
+  read_only<T, up_down_counter> CV;     ///< VAR_OUTPUT: the count
 
   using VAR_INPUT = pins<&up_down_counter::CU, &up_down_counter::CD, reset_base::pin, load_base::pin, &up_down_counter::PV>;
   using VAR_OUTPUT = pins<&up_down_counter::QU, &up_down_counter::QD, &up_down_counter::CV>;

@@ -28,7 +28,7 @@ namespace iecoop {
 class rising_edge_trigger : public function_block<rising_edge_trigger> {
  public:
   BOOL CLK;                    ///< VAR_INPUT: the signal
-  local<BOOL, rising_edge_trigger> Q;  ///< VAR_OUTPUT: TRUE on the call where CLK rose
+  read_only<BOOL, rising_edge_trigger> Q;  ///< VAR_OUTPUT: TRUE on the call where CLK rose
 
   using VAR_INPUT = pins<&rising_edge_trigger::CLK>;
   using VAR_OUTPUT = pins<&rising_edge_trigger::Q>;
@@ -50,7 +50,7 @@ template <Dialect D>
 class falling_edge_trigger : public function_block<falling_edge_trigger<D>> {
  public:
   BOOL CLK;                     ///< VAR_INPUT: the signal
-  local<BOOL, falling_edge_trigger> Q;  ///< VAR_OUTPUT: TRUE on the call where CLK fell
+  read_only<BOOL, falling_edge_trigger> Q;  ///< VAR_OUTPUT: TRUE on the call where CLK fell
 
   using VAR_INPUT = pins<&falling_edge_trigger::CLK>;
   using VAR_OUTPUT = pins<&falling_edge_trigger::Q>;

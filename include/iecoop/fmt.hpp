@@ -30,6 +30,15 @@ struct fmt::formatter<iecoop::integer<Rep, Kind>> : fmt::formatter<Rep> {
   }
 };
 
+/// An intermediate result formats as its register's value (`i + 1` for INT 32767: 32768).
+template <class T>
+struct fmt::formatter<iecoop::intermediate<T>> : fmt::formatter<typename iecoop::intermediate<T>::rep> {
+  template <class Context>
+  auto format(iecoop::intermediate<T> value, Context& ctx) const {
+    return fmt::formatter<typename iecoop::intermediate<T>::rep>::format(value.value(), ctx);
+  }
+};
+
 template <class Rep>
 struct fmt::formatter<iecoop::real<Rep>> : fmt::formatter<Rep> {
   template <class Context>
@@ -75,7 +84,7 @@ struct fmt::formatter<iecoop::iec_string<char16_t, N>> : fmt::formatter<std::str
   }
 };
 
-// var<>, in_out<>, output<> and property<> format as their values (a property calls Get).
+// var<>, read_only<>, in_out<>, output<>, retain<>, located<> and property<> format as their values (a property calls Get).
 template <class W>
   requires iecoop::detail::value_wrapper<W>
 struct fmt::formatter<W, char> : fmt::formatter<iecoop::detail::unwrapped_t<W>, char> {

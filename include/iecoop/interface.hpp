@@ -31,6 +31,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pins.hpp>
@@ -246,6 +247,8 @@ template <class T>
 inline constexpr bool is_interface_variable = false;
 template <class I>
 inline constexpr bool is_interface_variable<itf<I>> = true;
+template <class I>
+struct is_iec_value<itf<I>> : std::true_type {};
 }  // namespace detail
 
 template <class I>
@@ -279,10 +282,24 @@ class itf {
   [[nodiscard]] constexpr I* get() const noexcept { return target_; }
   explicit constexpr operator bool() const noexcept { return target_ != nullptr; }
 
-  /// `x = 0` / `x <> 0`
-  friend constexpr bool operator==(const itf& a, std::nullptr_t) noexcept { return a.target_ == nullptr; }
+  /// `x = 0` / `x <> 0`: a BOOL, as in ST.
+  friend constexpr BOOL operator==(const itf& a, std::nullptr_t) noexcept { return BOOL(a.target_ == nullptr); }
+  friend constexpr BOOL operator!=(const itf& a, std::nullptr_t) noexcept { return BOOL(a.target_ != nullptr); }
+  friend constexpr BOOL operator==(std::nullptr_t, const itf& b) noexcept { return BOOL(b.target_ == nullptr); }
+  friend constexpr BOOL operator!=(std::nullptr_t, const itf& b) noexcept { return BOOL(b.target_ != nullptr); }
+  /// ST compares an interface variable with the number 0 only; the 0 may also arrive as an
+  /// int (a test framework forwarding its operands): equal when both are 0.
+  template <std::same_as<int> Zero>
+  friend constexpr BOOL operator==(const itf& a, Zero zero) noexcept {
+    return BOOL(a.target_ == nullptr && zero == 0);
+  }
+  template <std::same_as<int> Zero>
+  friend constexpr BOOL operator!=(const itf& a, Zero zero) noexcept {
+    return BOOL(!(a.target_ == nullptr && zero == 0));
+  }
   /// The same block?
-  friend constexpr bool operator==(const itf& a, const itf& b) noexcept { return a.target_ == b.target_; }
+  friend constexpr BOOL operator==(const itf& a, const itf& b) noexcept { return BOOL(a.target_ == b.target_); }
+  friend constexpr BOOL operator!=(const itf& a, const itf& b) noexcept { return BOOL(a.target_ != b.target_); }
 
  private:
   I& checked() const {

@@ -36,6 +36,16 @@ std::ostream& operator<<(std::ostream& os, integer<Rep, Kind> value) {
   return detail::print_text(os, value);
 }
 
+/// An intermediate result prints its register's value (`i + 1` for INT 32767: 32768).
+template <class T>
+std::ostream& operator<<(std::ostream& os, intermediate<T> value) {
+  if constexpr (std::is_signed_v<typename intermediate<T>::rep>) {
+    return os << static_cast<long long>(value.value());
+  } else {
+    return os << static_cast<unsigned long long>(value.value());
+  }
+}
+
 template <class Rep>
 std::ostream& operator<<(std::ostream& os, real<Rep> value) {
   return detail::print_text(os, value);
@@ -63,6 +73,10 @@ std::ostream& operator<<(std::ostream& os, const iec_string<char16_t, N>& value)
 
 template <class T, class Owner>
 std::ostream& operator<<(std::ostream& os, const local<T, Owner>& variable) {
+  return os << variable.get();
+}
+template <class T, class Owner>
+std::ostream& operator<<(std::ostream& os, const read_only<T, Owner>& variable) {
   return os << variable.get();
 }
 template <class T>

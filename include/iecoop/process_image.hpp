@@ -439,8 +439,8 @@ class located {
     }
   }
   operator T() const noexcept { return get(); }  // NOLINT: reads as the variable
-  /// `IF bStart THEN` (for BOOL).
-  explicit operator bool() const noexcept
+  /// `IF bStart THEN`, `bool b = bStart;` (for BOOL).
+  operator bool() const noexcept  // NOLINT: a BOOL is a condition
     requires std::is_same_v<T, BOOL>
   {
     return static_cast<bool>(get());
@@ -459,22 +459,13 @@ class located {
     return *this;
   }
 
-  located& operator+=(const T& v) noexcept { return *this = static_cast<T>(get() + v); }
-  located& operator-=(const T& v) noexcept { return *this = static_cast<T>(get() - v); }
-  located& operator*=(const T& v) noexcept { return *this = static_cast<T>(get() * v); }
-  located& operator/=(const T& v) { return *this = static_cast<T>(get() / v); }  // by 0: a fault, as T's /
-  located& operator&=(const T& v) noexcept { return *this = static_cast<T>(get() & v); }
-  located& operator|=(const T& v) noexcept { return *this = static_cast<T>(get() | v); }
-  located& operator^=(const T& v) noexcept { return *this = static_cast<T>(get() ^ v); }
-  located& operator++() noexcept {
-    T v = get();
-    ++v;
-    return *this = v;
-  }
-  located& operator--() noexcept {
-    T v = get();
-    --v;
-    return *this = v;
+  /// From another variable wrapper whose value converts implicitly. Compound assignments
+  /// (`iCount += 1;`) are those of every variable wrapper (detail/value_operators.hpp).
+  template <class V>
+    requires detail::converts_through_wrapper<T, V>
+  located& operator=(const V& other) noexcept {
+    const T value = detail::value_of(other);
+    return *this = value;
   }
 };
 

@@ -209,33 +209,17 @@ class retained_variable {
   ~retained_variable() { unlink_retained(node_); }
 
   /// Assigns the value (a non-template operand, so that constants convert as in any
-  /// assignment: `iCount = 5;`).
+  /// assignment: `iCount = 5;`). Compound assignments (`iCount += 1;`) are those of every
+  /// variable wrapper (detail/value_operators.hpp).
   Derived& operator=(const T& value) noexcept {
     detail::copy_value(value_, value);
     return self();
   }
-  Derived& operator+=(const T& v) {
-    detail::assign_value(value_, value_ + v);
-    return self();
-  }
-  Derived& operator-=(const T& v) {
-    detail::assign_value(value_, value_ - v);
-    return self();
-  }
-  Derived& operator*=(const T& v) {
-    detail::assign_value(value_, value_ * v);
-    return self();
-  }
-  Derived& operator/=(const T& v) {
-    detail::assign_value(value_, value_ / v);
-    return self();
-  }
-  Derived& operator++() {
-    ++value_;
-    return self();
-  }
-  Derived& operator--() {
-    --value_;
+  /// From another variable wrapper whose value converts implicitly.
+  template <class V>
+    requires detail::converts_through_wrapper<T, V>
+  Derived& operator=(const V& other) {
+    detail::assign_value(value_, detail::value_of(other));
     return self();
   }
 
@@ -243,11 +227,29 @@ class retained_variable {
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   /// Write access to members of a structured variable: `stRecipe.ref().rSpeed = 1.5;`
   [[nodiscard]] constexpr T& ref() noexcept { return value_; }
-  constexpr const T* operator->() const noexcept { return &value_; }
-  constexpr T* operator->() noexcept { return &value_; }
-  /// `IF bFlag THEN` (the value's own test, which the implicit conversion cannot reach).
+  constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }
+  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(value_); }
+  /// An element of an ARRAY (`a[i]`).
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index) const
+    requires requires(const T& v) { v[std::forward<I>(index)]; }
+  {
+    return value_[std::forward<I>(index)];
+  }
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index)
+    requires requires(T& v) { v[std::forward<I>(index)]; }
+  {
+    return value_[std::forward<I>(index)];
+  }
+  /// A BOOL variable is a condition like a BOOL (`if (bFlag)`, `bool b = bFlag;`).
+  constexpr operator bool() const noexcept  // NOLINT
+    requires std::is_same_v<T, BOOL>
+  {
+    return static_cast<bool>(value_);
+  }
   explicit constexpr operator bool() const
-    requires std::is_constructible_v<bool, const T&>
+    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
   {
     return static_cast<bool>(value_);
   }

@@ -11,6 +11,8 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/any_field.hpp>
+#include <iecoop/detail/iec_value.hpp>
+#include <iecoop/types.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
@@ -24,6 +26,8 @@ template <class T>
 struct is_iec_string : std::false_type {};
 template <class C, std::size_t N>
 struct is_iec_string<iec_string<C, N>> : std::true_type {};
+template <class C, std::size_t N>
+struct is_iec_value<iec_string<C, N>> : std::true_type {};
 
 /// Text of character type C other than an iec_string: string literals, pointers to
 /// NUL-terminated text, std::basic_string, std::basic_string_view.
@@ -119,16 +123,90 @@ using WSTRING = iec_string<char16_t, N>;
 template <class T>
 concept AnyString = detail::is_iec_string<T>::value;
 
-// Comparison of an iec_string with another of any capacity, a literal or a std string.
+namespace detail {
+/// What an iec_string compares with: another of any capacity, a literal or a std string.
+template <class S, class C>
+concept string_comparand = is_iec_string<S>::value || string_like<S, C>;
+/// The same on the left of an iec_string, other than an iec_string (that one is the other
+/// operator's left operand). A constant, not a concept built on string_comparand: a
+/// constraint that subsumes the other would make C++ prefer the reversed candidate of
+/// `s == "abc"`, which must return bool.
+template <class S, class C>
+inline constexpr bool string_left_comparand_v = string_like<S, C>;
+
 template <class C, std::size_t N, class S>
-  requires(detail::is_iec_string<S>::value || detail::string_like<S, C>)
-constexpr bool operator==(const iec_string<C, N>& a, const S& b) noexcept {
-  return a.view() == std::basic_string_view<C>(b);
+constexpr int compare_strings(const iec_string<C, N>& a, const S& b) noexcept {
+  return a.view().compare(std::basic_string_view<C>(b));
+}
+}  // namespace detail
+
+// Comparison of an iec_string with another of any capacity, a literal or a std string: a
+// BOOL, as in ST.
+template <class C, std::size_t N, class S>
+  requires detail::string_comparand<S, C>
+constexpr BOOL operator==(const iec_string<C, N>& a, const S& b) noexcept {
+  return BOOL(a.view() == std::basic_string_view<C>(b));
 }
 template <class C, std::size_t N, class S>
-  requires(detail::is_iec_string<S>::value || detail::string_like<S, C>)
+  requires detail::string_comparand<S, C>
+constexpr BOOL operator!=(const iec_string<C, N>& a, const S& b) noexcept {
+  return BOOL(a.view() != std::basic_string_view<C>(b));
+}
+template <class C, std::size_t N, class S>
+  requires detail::string_comparand<S, C>
+constexpr BOOL operator<(const iec_string<C, N>& a, const S& b) noexcept {
+  return BOOL(detail::compare_strings(a, b) < 0);
+}
+template <class C, std::size_t N, class S>
+  requires detail::string_comparand<S, C>
+constexpr BOOL operator<=(const iec_string<C, N>& a, const S& b) noexcept {
+  return BOOL(detail::compare_strings(a, b) <= 0);
+}
+template <class C, std::size_t N, class S>
+  requires detail::string_comparand<S, C>
+constexpr BOOL operator>(const iec_string<C, N>& a, const S& b) noexcept {
+  return BOOL(detail::compare_strings(a, b) > 0);
+}
+template <class C, std::size_t N, class S>
+  requires detail::string_comparand<S, C>
+constexpr BOOL operator>=(const iec_string<C, N>& a, const S& b) noexcept {
+  return BOOL(detail::compare_strings(a, b) >= 0);
+}
+template <class C, std::size_t N, class S>
+  requires detail::string_comparand<S, C>
 constexpr std::strong_ordering operator<=>(const iec_string<C, N>& a, const S& b) noexcept {
-  return a.view().compare(std::basic_string_view<C>(b)) <=> 0;
+  return detail::compare_strings(a, b) <=> 0;
+}
+// The same with the literal or std string on the left (`'abc' = s`).
+template <class S, class C, std::size_t N>
+  requires detail::string_left_comparand_v<S, C>
+constexpr BOOL operator==(const S& a, const iec_string<C, N>& b) noexcept {
+  return BOOL(std::basic_string_view<C>(a) == b.view());
+}
+template <class S, class C, std::size_t N>
+  requires detail::string_left_comparand_v<S, C>
+constexpr BOOL operator!=(const S& a, const iec_string<C, N>& b) noexcept {
+  return BOOL(std::basic_string_view<C>(a) != b.view());
+}
+template <class S, class C, std::size_t N>
+  requires detail::string_left_comparand_v<S, C>
+constexpr BOOL operator<(const S& a, const iec_string<C, N>& b) noexcept {
+  return BOOL(detail::compare_strings(b, a) > 0);
+}
+template <class S, class C, std::size_t N>
+  requires detail::string_left_comparand_v<S, C>
+constexpr BOOL operator<=(const S& a, const iec_string<C, N>& b) noexcept {
+  return BOOL(detail::compare_strings(b, a) >= 0);
+}
+template <class S, class C, std::size_t N>
+  requires detail::string_left_comparand_v<S, C>
+constexpr BOOL operator>(const S& a, const iec_string<C, N>& b) noexcept {
+  return BOOL(detail::compare_strings(b, a) < 0);
+}
+template <class S, class C, std::size_t N>
+  requires detail::string_left_comparand_v<S, C>
+constexpr BOOL operator>=(const S& a, const iec_string<C, N>& b) noexcept {
+  return BOOL(detail::compare_strings(b, a) <= 0);
 }
 
 }  // namespace iecoop

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/float_to_int.hpp>
 #include <iecoop/detail/scalar_access.hpp>
@@ -151,7 +152,13 @@ class basic_time {
     return *this = *this / divisor;
   }
 
-  friend constexpr bool operator==(basic_time a, basic_time b) noexcept { return a.value_ == b.value_; }
+  // Comparisons yield BOOL, as in ST.
+  friend constexpr BOOL operator==(basic_time a, basic_time b) noexcept { return BOOL(a.value_ == b.value_); }
+  friend constexpr BOOL operator!=(basic_time a, basic_time b) noexcept { return BOOL(a.value_ != b.value_); }
+  friend constexpr BOOL operator<(basic_time a, basic_time b) noexcept { return BOOL(a.value_ < b.value_); }
+  friend constexpr BOOL operator<=(basic_time a, basic_time b) noexcept { return BOOL(a.value_ <= b.value_); }
+  friend constexpr BOOL operator>(basic_time a, basic_time b) noexcept { return BOOL(a.value_ > b.value_); }
+  friend constexpr BOOL operator>=(basic_time a, basic_time b) noexcept { return BOOL(a.value_ >= b.value_); }
   friend constexpr std::strong_ordering operator<=>(basic_time a, basic_time b) noexcept { return a.value_ <=> b.value_; }
 
  private:
@@ -197,6 +204,8 @@ class basic_time {
 
 template <class Rep, class Period>
 struct detail::is_scalar_wrapper<basic_time<Rep, Period>> : std::true_type {};
+template <class Rep, class Period>
+struct detail::is_iec_value<basic_time<Rep, Period>> : std::true_type {};
 
 /// IEC TIME as CODESYS stores it: unsigned 32-bit milliseconds.
 using TIME = basic_time<std::uint32_t, std::milli>;

@@ -90,14 +90,14 @@ class on_delay_timer : public function_block<on_delay_timer<Time>> {
 
  public:
   BOOL IN;                    ///< VAR_INPUT: rising edge starts the timer, FALSE resets it
-  local<BOOL, on_delay_timer> Q;    ///< VAR_OUTPUT: TRUE while IN has been TRUE for at least PT
+  read_only<BOOL, on_delay_timer> Q;    ///< VAR_OUTPUT: TRUE while IN has been TRUE for at least PT
 
  private:
   detail::timer_state state_;
 
  public:
   Time PT;                    ///< VAR_INPUT: the delay
-  local<Time, on_delay_timer> ET;   ///< VAR_OUTPUT: the elapsed time, 0 to PT
+  read_only<Time, on_delay_timer> ET;   ///< VAR_OUTPUT: the elapsed time, 0 to PT
 
  private:
   Time start_;
@@ -139,7 +139,7 @@ class off_delay_timer : public function_block<off_delay_timer<Time>> {
 
  public:
   BOOL IN;                    ///< VAR_INPUT: falling edge starts the timer, TRUE resets it
-  local<BOOL, off_delay_timer> Q;   ///< VAR_OUTPUT: IN, held for PT after IN falls
+  read_only<BOOL, off_delay_timer> Q;   ///< VAR_OUTPUT: IN, held for PT after IN falls
 
  private:
   bool running_ = false;
@@ -147,7 +147,7 @@ class off_delay_timer : public function_block<off_delay_timer<Time>> {
 
  public:
   Time PT;                    ///< VAR_INPUT: the delay
-  local<Time, off_delay_timer> ET;  ///< VAR_OUTPUT: the elapsed time, 0 to PT
+  read_only<Time, off_delay_timer> ET;  ///< VAR_OUTPUT: the elapsed time, 0 to PT
 
  private:
   Time start_;
@@ -190,14 +190,14 @@ class pulse_timer : public function_block<pulse_timer<Time>> {
 
  public:
   BOOL IN;                  ///< VAR_INPUT: rising edge starts a pulse (ignored while one runs)
-  local<BOOL, pulse_timer> Q;     ///< VAR_OUTPUT: the pulse_timer
+  read_only<BOOL, pulse_timer> Q;     ///< VAR_OUTPUT: the pulse_timer
 
  private:
   detail::timer_state state_;
 
  public:
   Time PT;                  ///< VAR_INPUT: the pulse's length
-  local<Time, pulse_timer> ET;    ///< VAR_OUTPUT: the pulse_timer's elapsed time, 0 to PT
+  read_only<Time, pulse_timer> ET;    ///< VAR_OUTPUT: the pulse_timer's elapsed time, 0 to PT
 
  private:
   Time start_;

@@ -3,15 +3,21 @@
 // BYTE..LWORD, REAL and LREAL, with PLC semantics in C++.
 //
 // * Every variable starts at 0 / FALSE, as on a PLC.
-// * Integer arithmetic wraps around (two's complement) and is never undefined behaviour;
-//   division and MOD by zero go to the fault path (see <iecoop/fault.hpp>) and yield 0.
+// * Integer arithmetic is CODESYS's: an operation computes its result in the registers of
+//   the target — at least 32 bits, 64 on a 64-bit target — and the result is cut to the
+//   variable's width only when it is assigned (see intermediate<T>). So `wVar1 + 1 = wVar2`
+//   is FALSE for wVar1 = 65535, wVar2 = 0, while `wVar3 := wVar1 + 1;` stores 0. Nothing is
+//   undefined behaviour: the registers wrap too. Division and MOD by zero go to the fault
+//   path (see <iecoop/fault.hpp>) and yield 0.
 // * Conversions follow IEC's implicit-conversion rules: widening (INT -> DINT, USINT -> INT,
 //   BYTE -> WORD, INT -> REAL) is implicit; narrowing or a change of signedness needs an
 //   explicit conversion (DINT_TO_INT, static_cast<INT>(d)), which keeps the low bytes.
 // * A C++ integer constant converts implicitly if it fits the type; whether it fits is
 //   checked at compile time (INT x = 70000; does not compile).
+// * A comparison yields a BOOL, as in ST, so `b := x = 1 OR x = 3;` is `b = x == 1 | x == 3;`.
 #pragma once
 
+#include <climits>
 #include <compare>
 #include <concepts>
 #include <cstdint>
@@ -21,6 +27,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/fault.hpp>
 
@@ -28,15 +35,90 @@
 
 namespace iecoop {
 
+/// The three families of IEC integer types. Arithmetic is allowed on all three (as in
+/// CODESYS); implicit conversions only stay within a family, plus unsigned -> signed.
+enum class integer_kind : unsigned char {
+  signed_int,    ///< SINT, INT, DINT, LINT
+  unsigned_int,  ///< USINT, UINT, UDINT, ULINT
+  bit_string,    ///< BYTE, WORD, DWORD, LWORD
+};
+
+template <class Rep, integer_kind Kind>
+class integer;
+template <class T>
+class intermediate;
+
+template <std::floating_point Rep>
+class real;
+
+namespace detail {
+template <class T>
+struct is_integer : std::false_type {};
+template <class Rep, integer_kind Kind>
+struct is_integer<integer<Rep, Kind>> : std::true_type {};
+template <class T>
+struct is_intermediate : std::false_type {};
+template <class T>
+struct is_intermediate<intermediate<T>> : std::true_type {};
+
+template <class T>
+struct is_real : std::false_type {};
+template <class Rep>
+struct is_real<real<Rep>> : std::true_type {};
+
+template <class T>
+inline constexpr bool is_char_v = std::is_same_v<T, char> || std::is_same_v<T, wchar_t> ||
+                                  std::is_same_v<T, char8_t> || std::is_same_v<T, char16_t> ||
+                                  std::is_same_v<T, char32_t>;
+
+/// A built-in C++ integer type (not bool, not a character type).
+template <class T>
+concept cpp_integer = std::integral<T> && !std::is_same_v<T, bool> && !is_char_v<T>;
+}  // namespace detail
+
 // ---------------------------------------------------------------------------------------
 // BOOL
+
+class BOOL;
+
+namespace detail {
+/// Two operands of a BOOL operation: BOOL or C++ bool, at least one of them a BOOL.
+template <class A, class B>
+concept bool_operands = (std::is_same_v<A, BOOL> || std::is_same_v<A, bool>) &&
+                        (std::is_same_v<B, BOOL> || std::is_same_v<B, bool>) &&
+                        (std::is_same_v<A, BOOL> || std::is_same_v<B, BOOL>);
+/// A number a BOOL might meet: a C++ number (which C++ would silently combine with the BOOL's
+/// 0 or 1), a REAL or an IEC integer.
+template <class T>
+concept number_for_bool = (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) || is_real<T>::value ||
+                          is_integer<T>::value || is_intermediate<T>::value;
+/// A BOOL meeting a number: C++ would compute with it as 0 or 1; ST does not compile it.
+template <class A, class B>
+concept bool_with_number = (std::is_same_v<A, BOOL> && (number_for_bool<B> || std::is_same_v<B, BOOL> ||
+                                                        std::is_same_v<B, bool>)) ||
+                           (std::is_same_v<B, BOOL> && (number_for_bool<A> || std::is_same_v<A, bool>));
+template <class A, class B>
+concept bool_compared_with_number = (std::is_same_v<A, BOOL> && number_for_bool<B>) ||
+                                    (std::is_same_v<B, BOOL> && number_for_bool<A>);
+
+template <class T>
+constexpr bool bool_is_no_number() {
+  static_assert(dependent_false<T>,
+                "iecoop: BOOL is not a number: ST has no arithmetic on BOOL and compares it only with BOOL; "
+                "convert it first (BOOL_TO_INT(b)), or compare with TRUE / FALSE");
+  return false;
+}
+}  // namespace detail
 
 /**
  * IEC BOOL: TRUE or FALSE, one byte, FALSE by default.
  *
- * Constructible from `bool` only (`BOOL b = 1;` does not compile, as in ST). Converts to
- * `bool` in conditions (`if (b)`, `!b`, `b && c`). `&`, `|`, `^` are ST's AND, OR and XOR,
- * which evaluate both operands; `&&` and `||` are ST's AND_THEN and OR_ELSE.
+ * Constructible from `bool` only (`BOOL b = 1;` does not compile, as in ST). A BOOL is a
+ * condition wherever C++ expects one (`if (b)`, `bool ok = b;`, `b && c`). `&`, `|`, `^` are
+ * ST's AND, OR and XOR, which evaluate both operands; `&&` and `||` are ST's AND_THEN and
+ * OR_ELSE; `!` (and `~`, as on the other bit strings) is NOT. Comparisons of IEC values yield
+ * BOOL, so `x = 1 OR x = 3` is `x == 1 | x == 3`. Arithmetic with a BOOL, and comparing it
+ * with a number, do not compile.
  */
 class BOOL {
  public:
@@ -52,27 +134,138 @@ class BOOL {
     return *this;
   }
 
-  explicit constexpr operator bool() const noexcept { return value_; }
+  /// A condition: `if (b)`, `while (!b)`, `bool ok = b;`.
+  constexpr operator bool() const noexcept { return value_; }  // NOLINT: a BOOL is a condition
 
   // The operands are references: a BOOL passed by value is, for GCC 12, a byte copied as
   // `unsigned char`, which may alias anything and so keeps a loop's variables in memory.
-  friend constexpr bool operator==(const BOOL& a, const BOOL& b) noexcept { return a.value_ == b.value_; }
-  friend constexpr std::strong_ordering operator<=>(const BOOL& a, const BOOL& b) noexcept { return a.value_ <=> b.value_; }
+  // Each operator takes a BOOL or a C++ bool on either side (a template: an exact match, so
+  // that C++'s own operators on bool, which would yield int, are never chosen).
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator&(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) && bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator|(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) || bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator^(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) != bit(b));
+  }
   friend constexpr BOOL operator!(const BOOL& a) noexcept { return BOOL(!a.value_); }
-  friend constexpr BOOL operator&(const BOOL& a, const BOOL& b) noexcept { return BOOL(a.value_ && b.value_); }
-  friend constexpr BOOL operator|(const BOOL& a, const BOOL& b) noexcept { return BOOL(a.value_ || b.value_); }
-  friend constexpr BOOL operator^(const BOOL& a, const BOOL& b) noexcept { return BOOL(a.value_ != b.value_); }
-  constexpr BOOL& operator&=(BOOL b) noexcept { return *this = *this & b; }
-  constexpr BOOL& operator|=(BOOL b) noexcept { return *this = *this | b; }
-  constexpr BOOL& operator^=(BOOL b) noexcept { return *this = *this ^ b; }
+  friend constexpr BOOL operator~(const BOOL& a) noexcept { return BOOL(!a.value_); }
+
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator==(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) == bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator!=(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) != bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator<(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) < bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator<=(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) <= bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator>(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) > bit(b));
+  }
+  template <class A, class B>
+    requires detail::bool_operands<A, B>
+  friend constexpr BOOL operator>=(const A& a, const B& b) noexcept {
+    return BOOL(bit(a) >= bit(b));
+  }
+  friend constexpr std::strong_ordering operator<=>(const BOOL& a, const BOOL& b) noexcept { return a.value_ <=> b.value_; }
+
+  constexpr BOOL& operator&=(const BOOL& b) noexcept { return *this = *this & b; }
+  constexpr BOOL& operator|=(const BOOL& b) noexcept { return *this = *this | b; }
+  constexpr BOOL& operator^=(const BOOL& b) noexcept { return *this = *this ^ b; }
+
+  // What C++ would compute with a BOOL as the number 0 or 1 through its conversion to bool
+  // (`b + 1`, `b == 1`, `r * b`, `-b`): rejected, with the rule and the fix.
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator+(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator-(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator*(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator/(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator%(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator<<(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_with_number<A, B>
+  friend void operator>>(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend void operator&(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend void operator|(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend void operator^(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend bool operator==(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend bool operator!=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend bool operator<(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend bool operator<=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend bool operator>(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  template <class A, class B>
+    requires detail::bool_compared_with_number<A, B>
+  friend bool operator>=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  template <std::same_as<BOOL> B>
+  friend void operator-(const B&) {
+    detail::bool_is_no_number<B>();
+  }
+  template <std::same_as<BOOL> B>
+  friend void operator+(const B&) {
+    detail::bool_is_no_number<B>();
+  }
 
  private:
+  static constexpr bool bit(const BOOL& b) noexcept { return b.value_; }
+  static constexpr bool bit(bool b) noexcept { return b; }
+
   friend struct detail::scalar_access;
   bool value_ = false;
 };
 
 template <>
 struct detail::is_scalar_wrapper<BOOL> : std::true_type {};
+template <>
+struct detail::is_iec_value<BOOL> : std::true_type {};
 
 inline constexpr BOOL TRUE{true};
 inline constexpr BOOL FALSE{false};
@@ -80,27 +273,18 @@ inline constexpr BOOL FALSE{false};
 // ---------------------------------------------------------------------------------------
 // Integers and bit strings
 
-/// The three families of IEC integer types. Arithmetic is allowed on all three (as in
-/// CODESYS); implicit conversions only stay within a family, plus unsigned -> signed.
-enum class integer_kind : unsigned char {
-  signed_int,    ///< SINT, INT, DINT, LINT
-  unsigned_int,  ///< USINT, UINT, UDINT, ULINT
-  bit_string,    ///< BYTE, WORD, DWORD, LWORD
-};
-
-template <class Rep, integer_kind Kind>
-class integer;
+/// The width in bits of the registers integer expressions are computed in (see
+/// intermediate<T>): CODESYS computes at least in 32 bits, and in 64 bits on 64-bit targets.
+/// Define IECOOP_REGISTER_BITS as 32 or 64 (the same in every translation unit) to compute as
+/// another target does — 32 to test on a PC what a Cortex-M or x86 PLC computes.
+#if defined(IECOOP_REGISTER_BITS)
+inline constexpr int register_bits = IECOOP_REGISTER_BITS;
+#else
+inline constexpr int register_bits = sizeof(void*) * CHAR_BIT >= 64 ? 64 : 32;
+#endif
+static_assert(register_bits == 32 || register_bits == 64, "iecoop: IECOOP_REGISTER_BITS is 32 or 64");
 
 namespace detail {
-
-template <class T>
-inline constexpr bool is_char_v = std::is_same_v<T, char> || std::is_same_v<T, wchar_t> ||
-                                  std::is_same_v<T, char8_t> || std::is_same_v<T, char16_t> ||
-                                  std::is_same_v<T, char32_t>;
-
-/// A built-in C++ integer type (not bool, not a character type).
-template <class T>
-concept cpp_integer = std::integral<T> && !std::is_same_v<T, bool> && !is_char_v<T>;
 
 /// Every value of From is a value of To.
 template <class From, class To>
@@ -114,15 +298,101 @@ inline constexpr bool implicit_widening =
     range_within<FromRep, ToRep> &&
     (FromKind == ToKind || (FromKind == integer_kind::unsigned_int && ToKind == integer_kind::signed_int));
 
-/// The unsigned type wrap-around arithmetic on Rep is done in (at least unsigned int, so
-/// that integer promotion can never bring back signed overflow).
-template <class Rep>
-using wrap_t = std::make_unsigned_t<decltype(+Rep{})>;
+/// An IEC integer value: a variable's type, or an intermediate result.
+template <class X>
+concept int_value = is_integer<X>::value || is_intermediate<X>::value;
 
+/// The IEC type an integer value has: its own, or the one of the expression it results from.
+template <class X>
+struct nominal_of {
+  using type = X;
+};
 template <class T>
-struct is_integer : std::false_type {};
-template <class Rep, integer_kind Kind>
-struct is_integer<integer<Rep, Kind>> : std::true_type {};
+struct nominal_of<intermediate<T>> {
+  using type = T;
+};
+template <class X>
+using nominal_t = typename nominal_of<X>::type;
+
+/// An IEC integer type From converts to To implicitly (the same type, or IEC widening).
+template <class From, class To>
+inline constexpr bool widens_implicitly = false;
+template <class FR, integer_kind FK, class TR, integer_kind TK>
+inline constexpr bool widens_implicitly<integer<FR, FK>, integer<TR, TK>> =
+    std::is_same_v<integer<FR, FK>, integer<TR, TK>> || implicit_widening<FR, FK, TR, TK>;
+
+/// The type of an operation between values of the IEC integer types A and B: the wider
+/// one, or void if neither widens to the other (INT and UINT, WORD and UINT) or either is no
+/// IEC integer type.
+template <class A, class B>
+using common_integer_t =
+    std::conditional_t<widens_implicitly<A, B>, B, std::conditional_t<widens_implicitly<B, A>, A, void>>;
+
+/// The register an intermediate result of IEC type T is held in: register_bits, or wider for
+/// a wider T; signed for the signed integers, unsigned for the others.
+template <class T>
+using register_t = std::conditional_t<
+    (sizeof(typename T::rep) * CHAR_BIT > static_cast<std::size_t>(register_bits) ? sizeof(typename T::rep) * CHAR_BIT
+                                                                                  : static_cast<std::size_t>(register_bits)) == 64,
+    std::conditional_t<T::kind == integer_kind::signed_int, std::int64_t, std::uint64_t>,
+    std::conditional_t<T::kind == integer_kind::signed_int, std::int32_t, std::uint32_t>>;
+
+/// The value of an integer operand (a variable's or an intermediate's) in the register of IEC
+/// type R: sign- or zero-extended from its own, then taken modulo 2^bits.
+template <class R, class X>
+constexpr register_t<R> in_register(const X& x) noexcept {
+  return static_cast<register_t<R>>(x.value());
+}
+
+/// The arithmetic of registers: modulo 2^bits, never undefined behaviour.
+template <class Reg>
+struct register_math {
+  using wide = std::make_unsigned_t<Reg>;
+  static constexpr Reg add(Reg a, Reg b) noexcept { return static_cast<Reg>(static_cast<wide>(a) + static_cast<wide>(b)); }
+  static constexpr Reg sub(Reg a, Reg b) noexcept { return static_cast<Reg>(static_cast<wide>(a) - static_cast<wide>(b)); }
+  static constexpr Reg mul(Reg a, Reg b) noexcept { return static_cast<Reg>(static_cast<wide>(a) * static_cast<wide>(b)); }
+  static constexpr Reg neg(Reg a) noexcept { return static_cast<Reg>(wide{0} - static_cast<wide>(a)); }
+  static constexpr Reg complement(Reg a) noexcept { return static_cast<Reg>(~static_cast<wide>(a)); }
+  // Division truncates toward zero; the one quotient that overflows (MIN / -1) wraps.
+  static constexpr Reg div(Reg a, Reg b) noexcept {
+    if constexpr (std::is_signed_v<Reg>) {
+      if (b == -1) return neg(a);
+    }
+    return static_cast<Reg>(a / b);
+  }
+  static constexpr Reg mod(Reg a, Reg b) noexcept {
+    if constexpr (std::is_signed_v<Reg>) {
+      if (b == -1) return 0;
+    }
+    return static_cast<Reg>(a % b);
+  }
+};
+
+/// Integer division or MOD by zero: a fault, and the result 0.
+inline void integer_division_by_zero() { fault(fault_kind::division_by_zero, "integer division or MOD by zero; the result is 0"); }
+
+template <class A, class B>
+constexpr bool no_common_type() {
+  static_assert(dependent_false<A, B>,
+                "iecoop: these IEC integer types have no implicit common type (signed and unsigned, or bit string and "
+                "integer); convert one operand explicitly first, e.g. UINT_TO_DINT(u) or static_cast<INT>(w)");
+  return false;
+}
+
+/// Two IEC integer values of which at least one is an intermediate result, other than two
+/// intermediates of the same type (those have their own operators), whose types have a
+/// common type.
+template <class A, class B>
+concept mixed_int_operands =
+    int_value<A> && int_value<B> && (is_intermediate<A>::value || is_intermediate<B>::value) &&
+    !(is_intermediate<A>::value && is_intermediate<B>::value && std::is_same_v<A, B>) &&
+    !std::is_void_v<common_integer_t<nominal_t<A>, nominal_t<B>>>;
+
+/// Two IEC integer values whose types have no implicit common type: IEC needs an explicit
+/// conversion before they meet.
+template <class A, class B>
+concept unrelated_integers =
+    int_value<A> && int_value<B> && std::is_void_v<common_integer_t<nominal_t<A>, nominal_t<B>>>;
 
 }  // namespace detail
 
@@ -130,12 +400,15 @@ struct is_integer<integer<Rep, Kind>> : std::true_type {};
  * An IEC integer or bit-string type over the C++ integer `Rep`. Use the aliases: SINT, INT,
  * DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD.
  *
- * Same size and alignment as `Rep`, trivially copyable, 0 by default. All arithmetic
- * wraps modulo 2^bits. `/` and `%` (ST's MOD) truncate toward zero; by zero they report
- * fault_kind::division_by_zero and yield 0. `x.value()` gives the C++ integer.
+ * Same size and alignment as `Rep`, trivially copyable, 0 by default. `+ - * / %` (ST's
+ * MOD) and unary `-` compute in the target's registers and yield an intermediate<>, which a
+ * variable takes modulo 2^bits when it is assigned; `/` and `%` truncate toward zero, and by
+ * zero report fault_kind::division_by_zero and yield 0. `& | ^ ~` (AND, OR, XOR, NOT) stay in
+ * the type. `x.value()` gives the C++ integer.
  *
  *     INT i = 32767;
- *     i = i + 1;            // -32768, as on a PLC
+ *     i = i + 1;            // -32768, as on a PLC: the sum 32768 is cut to 16 bits
+ *     BOOL b = i + 1 > i;   // TRUE: the comparison sees the register's 32768
  *     DINT d = i;           // implicit widening
  *     i = DINT_TO_INT(d);   // narrowing is explicit (or static_cast<INT>(d))
  */
@@ -144,10 +417,6 @@ class integer {
   static_assert(detail::cpp_integer<Rep>, "iecoop: integer<Rep, Kind> needs a built-in integer Rep");
   static_assert(std::is_signed_v<Rep> == (Kind == integer_kind::signed_int),
                 "iecoop: signed IEC integers need a signed Rep, unsigned ones and bit strings an unsigned Rep");
-
-  using wrap = detail::wrap_t<Rep>;
-  static constexpr Rep from_wrap(wrap v) noexcept { return static_cast<Rep>(v); }  // modular
-  static constexpr wrap to_wrap(Rep v) noexcept { return static_cast<wrap>(v); }    // modular
 
  public:
   using rep = Rep;
@@ -188,32 +457,27 @@ class integer {
     return static_cast<T>(value_);
   }
 
-  // Arithmetic, wrapping modulo 2^bits.
-  friend constexpr integer operator+(integer a, integer b) noexcept { return from_wrap(to_wrap(a.value_) + to_wrap(b.value_)); }
-  friend constexpr integer operator-(integer a, integer b) noexcept { return from_wrap(to_wrap(a.value_) - to_wrap(b.value_)); }
-  friend constexpr integer operator*(integer a, integer b) noexcept { return from_wrap(to_wrap(a.value_) * to_wrap(b.value_)); }
-  friend constexpr integer operator/(integer a, integer b) {
-    if (b.value_ == 0) return divide_by_zero();
-    if constexpr (std::is_signed_v<Rep>) {
-      if (b.value_ == -1) return -a;  // the one quotient that overflows wraps instead
-    }
-    return static_cast<Rep>(a.value_ / b.value_);
+  // Arithmetic: the intermediate result in the target's registers (see intermediate<T>).
+  friend constexpr intermediate<integer> operator+(integer a, integer b) noexcept { return reg(math::add(in_reg(a), in_reg(b))); }
+  friend constexpr intermediate<integer> operator-(integer a, integer b) noexcept { return reg(math::sub(in_reg(a), in_reg(b))); }
+  friend constexpr intermediate<integer> operator*(integer a, integer b) noexcept { return reg(math::mul(in_reg(a), in_reg(b))); }
+  friend constexpr intermediate<integer> operator/(integer a, integer b) {
+    if (b.value_ == 0) return zero_after_division_fault();
+    return reg(math::div(in_reg(a), in_reg(b)));
   }
-  friend constexpr integer operator%(integer a, integer b) {
-    if (b.value_ == 0) return divide_by_zero();
-    if constexpr (std::is_signed_v<Rep>) {
-      if (b.value_ == -1) return integer();
-    }
-    return static_cast<Rep>(a.value_ % b.value_);
+  friend constexpr intermediate<integer> operator%(integer a, integer b) {
+    if (b.value_ == 0) return zero_after_division_fault();
+    return reg(math::mod(in_reg(a), in_reg(b)));
   }
-  friend constexpr integer operator-(integer a) noexcept { return from_wrap(wrap{0} - to_wrap(a.value_)); }
+  friend constexpr intermediate<integer> operator-(integer a) noexcept { return reg(math::neg(in_reg(a))); }
   friend constexpr integer operator+(integer a) noexcept { return a; }
 
-  // Bitwise: ST's AND, OR, XOR, NOT on bit strings (and, as CODESYS allows, integers).
+  // Bitwise: ST's AND, OR, XOR, NOT on bit strings (and, as CODESYS allows, integers), in
+  // the type's own width.
   friend constexpr integer operator&(integer a, integer b) noexcept { return static_cast<Rep>(a.value_ & b.value_); }
   friend constexpr integer operator|(integer a, integer b) noexcept { return static_cast<Rep>(a.value_ | b.value_); }
   friend constexpr integer operator^(integer a, integer b) noexcept { return static_cast<Rep>(a.value_ ^ b.value_); }
-  friend constexpr integer operator~(integer a) noexcept { return from_wrap(static_cast<wrap>(~to_wrap(a.value_))); }
+  friend constexpr integer operator~(integer a) noexcept { return static_cast<Rep>(~a.value_); }
 
   constexpr integer& operator+=(integer b) noexcept { return *this = *this + b; }
   constexpr integer& operator-=(integer b) noexcept { return *this = *this - b; }
@@ -236,35 +500,80 @@ class integer {
     return old;
   }
 
-  // Comparison with the same type (and, through implicit widening, with narrower types).
-  friend constexpr bool operator==(integer a, integer b) noexcept { return a.value_ == b.value_; }
+  // Comparison with the same type (and, through implicit widening, with narrower types):
+  // a BOOL, as in ST.
+  friend constexpr BOOL operator==(integer a, integer b) noexcept { return BOOL(a.value_ == b.value_); }
+  friend constexpr BOOL operator!=(integer a, integer b) noexcept { return BOOL(a.value_ != b.value_); }
+  friend constexpr BOOL operator<(integer a, integer b) noexcept { return BOOL(a.value_ < b.value_); }
+  friend constexpr BOOL operator<=(integer a, integer b) noexcept { return BOOL(a.value_ <= b.value_); }
+  friend constexpr BOOL operator>(integer a, integer b) noexcept { return BOOL(a.value_ > b.value_); }
+  friend constexpr BOOL operator>=(integer a, integer b) noexcept { return BOOL(a.value_ >= b.value_); }
   friend constexpr std::strong_ordering operator<=>(integer a, integer b) noexcept { return a.value_ <=> b.value_; }
 
   // Comparison with any C++ integer compares the mathematical values (no conversion, so
-  // INT(-1) < 4000000000u is true). Where both fit a common type without changing a value,
-  // that is a single machine comparison.
+  // INT(-1) < 4000000000u is TRUE).
   template <detail::cpp_integer T>
-  friend constexpr bool operator==(integer a, T b) noexcept {
-    return std::cmp_equal(a.value_, b);
+  friend constexpr BOOL operator==(integer a, T b) noexcept {
+    return BOOL(std::cmp_equal(a.value_, b));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator==(T a, integer b) noexcept {
+    return BOOL(std::cmp_equal(a, b.value_));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator!=(integer a, T b) noexcept {
+    return BOOL(std::cmp_not_equal(a.value_, b));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator!=(T a, integer b) noexcept {
+    return BOOL(std::cmp_not_equal(a, b.value_));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator<(integer a, T b) noexcept {
+    return BOOL(std::cmp_less(a.value_, b));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator<(T a, integer b) noexcept {
+    return BOOL(std::cmp_less(a, b.value_));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator<=(integer a, T b) noexcept {
+    return BOOL(std::cmp_less_equal(a.value_, b));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator<=(T a, integer b) noexcept {
+    return BOOL(std::cmp_less_equal(a, b.value_));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator>(integer a, T b) noexcept {
+    return BOOL(std::cmp_greater(a.value_, b));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator>(T a, integer b) noexcept {
+    return BOOL(std::cmp_greater(a, b.value_));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator>=(integer a, T b) noexcept {
+    return BOOL(std::cmp_greater_equal(a.value_, b));
+  }
+  template <detail::cpp_integer T>
+  friend constexpr BOOL operator>=(T a, integer b) noexcept {
+    return BOOL(std::cmp_greater_equal(a, b.value_));
   }
   template <detail::cpp_integer T>
   friend constexpr std::strong_ordering operator<=>(integer a, T b) noexcept {
-    if constexpr (std::is_signed_v<Rep> == std::is_signed_v<T>) {
-      using common = std::common_type_t<Rep, T>;
-      return static_cast<common>(a.value_) <=> static_cast<common>(b);
-    } else if constexpr (sizeof(Rep) < sizeof(long long) && sizeof(T) < sizeof(long long)) {
-      return static_cast<long long>(a.value_) <=> static_cast<long long>(b);
-    } else {
-      if (std::cmp_less(a.value_, b)) return std::strong_ordering::less;
-      if (std::cmp_greater(a.value_, b)) return std::strong_ordering::greater;
-      return std::strong_ordering::equal;
-    }
+    if (std::cmp_less(a.value_, b)) return std::strong_ordering::less;
+    if (std::cmp_greater(a.value_, b)) return std::strong_ordering::greater;
+    return std::strong_ordering::equal;
   }
 
  private:
-  static integer divide_by_zero() {
-    fault(fault_kind::division_by_zero, "integer division or MOD by zero; the result is 0");
-    return integer();
+  using math = detail::register_math<detail::register_t<integer>>;
+  static constexpr detail::register_t<integer> in_reg(integer x) noexcept { return detail::in_register<integer>(x); }
+  static constexpr intermediate<integer> reg(detail::register_t<integer> r) noexcept { return intermediate<integer>::from_register(r); }
+  static intermediate<integer> zero_after_division_fault() {
+    detail::integer_division_by_zero();
+    return intermediate<integer>();
   }
 
   friend struct detail::scalar_access;
@@ -273,46 +582,8 @@ class integer {
 
 template <class Rep, integer_kind Kind>
 struct detail::is_scalar_wrapper<integer<Rep, Kind>> : std::true_type {};
-
-namespace detail {
-/// Two IEC integer types neither of which widens implicitly to the other (INT and UINT,
-/// WORD and UINT, ...): IEC needs an explicit conversion before they meet.
-template <class A, class B>
-concept unrelated_integers = is_integer<A>::value && is_integer<B>::value && !std::is_same_v<A, B> &&
-                             !implicit_widening<typename A::rep, A::kind, typename B::rep, B::kind> &&
-                             !implicit_widening<typename B::rep, B::kind, typename A::rep, A::kind>;
-
-template <class A, class B>
-constexpr bool no_common_type() {
-  static_assert(dependent_false<A, B>,
-                "iecoop: these IEC integer types have no implicit common type (signed and unsigned, or bit string and "
-                "integer); convert one operand explicitly first, e.g. UINT_TO_DINT(u) or static_cast<INT>(w)");
-  return false;
-}
-}  // namespace detail
-
-// Arithmetic, bitwise operations and comparisons between unrelated integer types: rejected
-// with a message instead of an unhelpful "no match for operator".
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator+(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator-(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator*(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator/(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator%(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator&(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator|(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator^(A, B) { detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator==(A, B) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-std::strong_ordering operator<=>(A, B) { return detail::no_common_type<A, B>() ? std::strong_ordering::equal : std::strong_ordering::less; }
+template <class Rep, integer_kind Kind>
+struct detail::is_iec_value<integer<Rep, Kind>> : std::true_type {};
 
 using SINT = integer<std::int8_t, integer_kind::signed_int>;
 using INT = integer<std::int16_t, integer_kind::signed_int>;
@@ -328,24 +599,341 @@ using DWORD = integer<std::uint32_t, integer_kind::bit_string>;
 using LWORD = integer<std::uint64_t, integer_kind::bit_string>;
 
 // ---------------------------------------------------------------------------------------
-// REAL and LREAL
+// Intermediate results
 
-template <std::floating_point Rep>
-class real;
+/**
+ * The result of an integer operation of IEC type T, as CODESYS computes it: in a register of
+ * the target, `register_bits` wide (32, or 64 on a 64-bit target; wider where T is), signed
+ * for the signed types and unsigned for the others, and not cut to T's width. It is cut —
+ * the low bits kept — when it is assigned to a variable, passed to a parameter, or converted
+ * (`TO_WORD(w + 1)`); comparisons, divisions and further operations see the whole register:
+ *
+ *     wVar1 := 65535; wVar2 := 0;
+ *     bVar1 := (wVar1 + 1) = wVar2;       // FALSE: 65536 <> 0
+ *     wVar3 := wVar1 + 1;                 // 0
+ *     bVar1 := TO_WORD(wVar1 + 1) = wVar2; // TRUE
+ *     iVar := (iVar + 10) / 2;            // 16388 for iVar = 32767, not -16374
+ *
+ * It converts implicitly to T and to every type T widens to implicitly (INT + 1 into a DINT
+ * keeps 32768), to REAL/LREAL where T does, and explicitly to the other integer types.
+ * `value()` is the register as a C++ integer. Registers wrap modulo 2^bits.
+ */
+template <class T>
+class intermediate {
+  static_assert(detail::is_integer<T>::value, "iecoop: intermediate<T> is the result of an IEC integer type T");
+
+ public:
+  using nominal_type = T;
+  using rep = detail::register_t<T>;
+  static constexpr int bits = static_cast<int>(sizeof(rep) * CHAR_BIT);
+
+  constexpr intermediate() noexcept = default;
+  /// The value of a variable of type T.
+  constexpr intermediate(T value) noexcept : value_(detail::in_register<T>(value)) {}  // NOLINT: a value is an expression
+  /// A C++ integer constant in an expression (`(i + 1) * 2`): checked against T while compiling.
+  template <detail::cpp_integer C>
+  consteval intermediate(C constant) : value_(static_cast<rep>(constant)) {  // NOLINT
+    if (!std::in_range<typename T::rep>(constant)) {
+      detail::compile_error("iecoop: integer constant out of range for this IEC type; use a wider type or an explicit conversion");
+    }
+  }
+  /// A register holding `r`.
+  static constexpr intermediate from_register(rep r) noexcept {
+    intermediate x;
+    x.value_ = r;
+    return x;
+  }
+
+  /// The register as a C++ integer.
+  [[nodiscard]] constexpr rep value() const noexcept { return value_; }
+
+  /// To T, or a type T widens to implicitly: the register's low bits (as an assignment in ST).
+  template <class U>
+    requires(detail::is_integer<U>::value && detail::widens_implicitly<T, U>)
+  constexpr operator U() const noexcept {  // NOLINT: ST assigns an expression to its variable
+    return U(static_cast<typename U::rep>(value_));
+  }
+  /// To another integer type: explicit (keeps the low bits, like DINT_TO_INT).
+  template <class U>
+    requires(detail::is_integer<U>::value && !detail::widens_implicitly<T, U>)
+  explicit constexpr operator U() const noexcept {
+    return U(static_cast<typename U::rep>(value_));
+  }
+  /// To REAL or LREAL where T converts implicitly: the register's value (no cut).
+  template <class R>
+    requires std::is_convertible_v<T, real<R>>
+  constexpr operator real<R>() const noexcept {  // NOLINT
+    return real<R>(static_cast<R>(value_));
+  }
+  /// To a C++ arithmetic type (not bool): explicit.
+  template <class C>
+    requires(std::is_arithmetic_v<C> && !std::is_same_v<C, bool>)
+  explicit constexpr operator C() const noexcept {
+    return static_cast<C>(value_);
+  }
+
+  friend constexpr intermediate operator+(intermediate a, intermediate b) noexcept { return from_register(math::add(a.value_, b.value_)); }
+  friend constexpr intermediate operator-(intermediate a, intermediate b) noexcept { return from_register(math::sub(a.value_, b.value_)); }
+  friend constexpr intermediate operator*(intermediate a, intermediate b) noexcept { return from_register(math::mul(a.value_, b.value_)); }
+  friend constexpr intermediate operator/(intermediate a, intermediate b) {
+    if (b.value_ == 0) return zero_after_division_fault();
+    return from_register(math::div(a.value_, b.value_));
+  }
+  friend constexpr intermediate operator%(intermediate a, intermediate b) {
+    if (b.value_ == 0) return zero_after_division_fault();
+    return from_register(math::mod(a.value_, b.value_));
+  }
+  friend constexpr intermediate operator&(intermediate a, intermediate b) noexcept { return from_register(static_cast<rep>(a.value_ & b.value_)); }
+  friend constexpr intermediate operator|(intermediate a, intermediate b) noexcept { return from_register(static_cast<rep>(a.value_ | b.value_)); }
+  friend constexpr intermediate operator^(intermediate a, intermediate b) noexcept { return from_register(static_cast<rep>(a.value_ ^ b.value_)); }
+  friend constexpr intermediate operator-(intermediate a) noexcept { return from_register(math::neg(a.value_)); }
+  friend constexpr intermediate operator+(intermediate a) noexcept { return a; }
+  friend constexpr intermediate operator~(intermediate a) noexcept { return from_register(math::complement(a.value_)); }
+
+  friend constexpr BOOL operator==(intermediate a, intermediate b) noexcept { return BOOL(a.value_ == b.value_); }
+  friend constexpr BOOL operator!=(intermediate a, intermediate b) noexcept { return BOOL(a.value_ != b.value_); }
+  friend constexpr BOOL operator<(intermediate a, intermediate b) noexcept { return BOOL(a.value_ < b.value_); }
+  friend constexpr BOOL operator<=(intermediate a, intermediate b) noexcept { return BOOL(a.value_ <= b.value_); }
+  friend constexpr BOOL operator>(intermediate a, intermediate b) noexcept { return BOOL(a.value_ > b.value_); }
+  friend constexpr BOOL operator>=(intermediate a, intermediate b) noexcept { return BOOL(a.value_ >= b.value_); }
+  friend constexpr std::strong_ordering operator<=>(intermediate a, intermediate b) noexcept { return a.value_ <=> b.value_; }
+
+  // With a C++ integer: the mathematical values (the register's against the number).
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator==(intermediate a, C b) noexcept {
+    return BOOL(std::cmp_equal(a.value_, b));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator==(C a, intermediate b) noexcept {
+    return BOOL(std::cmp_equal(a, b.value_));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator!=(intermediate a, C b) noexcept {
+    return BOOL(std::cmp_not_equal(a.value_, b));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator!=(C a, intermediate b) noexcept {
+    return BOOL(std::cmp_not_equal(a, b.value_));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator<(intermediate a, C b) noexcept {
+    return BOOL(std::cmp_less(a.value_, b));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator<(C a, intermediate b) noexcept {
+    return BOOL(std::cmp_less(a, b.value_));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator<=(intermediate a, C b) noexcept {
+    return BOOL(std::cmp_less_equal(a.value_, b));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator<=(C a, intermediate b) noexcept {
+    return BOOL(std::cmp_less_equal(a, b.value_));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator>(intermediate a, C b) noexcept {
+    return BOOL(std::cmp_greater(a.value_, b));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator>(C a, intermediate b) noexcept {
+    return BOOL(std::cmp_greater(a, b.value_));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator>=(intermediate a, C b) noexcept {
+    return BOOL(std::cmp_greater_equal(a.value_, b));
+  }
+  template <detail::cpp_integer C>
+  friend constexpr BOOL operator>=(C a, intermediate b) noexcept {
+    return BOOL(std::cmp_greater_equal(a, b.value_));
+  }
+
+ private:
+  using math = detail::register_math<rep>;
+  static intermediate zero_after_division_fault() {
+    detail::integer_division_by_zero();
+    return intermediate();
+  }
+
+  rep value_ = 0;
+};
+
+template <class T>
+struct detail::is_iec_value<intermediate<T>> : std::true_type {};
 
 namespace detail {
-template <class T>
-struct is_real : std::false_type {};
-template <class Rep>
-struct is_real<real<Rep>> : std::true_type {};
+
+/// Two integer values of which one is (or both are) intermediate, in the register of their
+/// common type C.
+template <class A, class B>
+using mixed_common_t = common_integer_t<nominal_t<A>, nominal_t<B>>;
+
+}  // namespace detail
+
+// Operations between an intermediate and a variable, or two intermediates of different
+// types: computed in the register of their common type, as in ST (INT + DINT is a DINT).
+// Templates with exact matches, so that neither operand is first cut to the other's type.
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator+(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) + intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator-(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) - intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator*(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) * intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator/(const A& a, const B& b) {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) / intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator%(const A& a, const B& b) {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) % intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator&(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) & intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator|(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) | intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr intermediate<detail::mixed_common_t<A, B>> operator^(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return intermediate<C>::from_register(detail::in_register<C>(a)) ^ intermediate<C>::from_register(detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr BOOL operator==(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return BOOL(detail::in_register<C>(a) == detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr BOOL operator!=(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return BOOL(detail::in_register<C>(a) != detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr BOOL operator<(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return BOOL(detail::in_register<C>(a) < detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr BOOL operator<=(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return BOOL(detail::in_register<C>(a) <= detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr BOOL operator>(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return BOOL(detail::in_register<C>(a) > detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr BOOL operator>=(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return BOOL(detail::in_register<C>(a) >= detail::in_register<C>(b));
+}
+template <class A, class B>
+  requires detail::mixed_int_operands<A, B>
+constexpr std::strong_ordering operator<=>(const A& a, const B& b) noexcept {
+  using C = detail::mixed_common_t<A, B>;
+  return detail::in_register<C>(a) <=> detail::in_register<C>(b);
+}
+
+// Arithmetic, bitwise operations and comparisons between unrelated integer types: rejected
+// with a message instead of an unhelpful "no match for operator".
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator+(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator-(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator*(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator/(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator%(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator&(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator|(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+void operator^(const A&, const B&) { detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+bool operator==(const A&, const B&) { return detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+bool operator!=(const A&, const B&) { return detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+bool operator<(const A&, const B&) { return detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+bool operator<=(const A&, const B&) { return detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+bool operator>(const A&, const B&) { return detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+bool operator>=(const A&, const B&) { return detail::no_common_type<A, B>(); }
+template <class A, class B> requires detail::unrelated_integers<A, B>
+std::strong_ordering operator<=>(const A&, const B&) { return detail::no_common_type<A, B>() ? std::strong_ordering::equal : std::strong_ordering::less; }
+
+// ---------------------------------------------------------------------------------------
+// REAL and LREAL
+
+namespace detail {
+/// What a REAL compares with: C++ numbers, REAL/LREAL, and the IEC integers it represents
+/// exactly (INT with REAL, DINT with LREAL).
+template <class Rep, class U>
+concept real_comparand = (std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) || is_real<U>::value ||
+                         ((is_integer<U>::value || is_intermediate<U>::value) && std::is_convertible_v<U, real<Rep>>);
+/// The same, on the left of a REAL (a REAL there is the other operator's left operand). Not
+/// defined through real_comparand: a constraint that subsumes the other would make C++ prefer
+/// the reversed candidate of `r == 1.0`, which must return bool.
+template <class Rep, class U>
+concept real_left_comparand = !is_real<U>::value && ((std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) ||
+                                                     ((is_integer<U>::value || is_intermediate<U>::value) &&
+                                                      std::is_convertible_v<U, real<Rep>>));
+
+/// A comparand as a C++ number: a REAL's float, an integer's value in the REAL's type (exact),
+/// a C++ number itself.
+template <class Rep, class U>
+constexpr auto real_operand(const U& u) noexcept {
+  if constexpr (is_real<U>::value) {
+    return u.value();
+  } else if constexpr (is_integer<U>::value || is_intermediate<U>::value) {
+    return static_cast<Rep>(u.value());
+  } else {
+    return u;
+  }
+}
 }  // namespace detail
 
 /**
  * IEC REAL (`real<float>`) and LREAL (`real<double>`): IEEE 754, 0.0 by default.
  *
  * Behaves as the C++ floating type it wraps (it converts to it implicitly, so `r * 2.0f`,
- * `std::sqrt(r)` and comparisons work) and adds what C++'s float lacks for PLC code:
- * zero-initialisation, a distinct type for formatting, and IEC's conversion rules:
+ * `std::sqrt(r)` work) and adds what C++'s float lacks for PLC code: zero-initialisation, a
+ * distinct type for formatting, comparisons that yield BOOL, and IEC's conversion rules:
  * REAL -> LREAL and small integers (INT -> REAL, DINT -> LREAL) are implicit, LREAL -> REAL
  * needs LREAL_TO_REAL.
  */
@@ -376,6 +964,68 @@ class real {
   constexpr real& operator*=(Rep b) noexcept { value_ *= b; return *this; }
   constexpr real& operator/=(Rep b) noexcept { value_ /= b; return *this; }
 
+  // Comparisons yield BOOL (templates: exact matches, chosen over C++'s own float operators).
+  template <class U>
+    requires detail::real_comparand<Rep, U>
+  friend constexpr BOOL operator==(const real& a, const U& b) noexcept {
+    return BOOL(a.value_ == detail::real_operand<Rep>(b));
+  }
+  template <class U>
+    requires detail::real_left_comparand<Rep, U>
+  friend constexpr BOOL operator==(const U& a, const real& b) noexcept {
+    return BOOL(detail::real_operand<Rep>(a) == b.value_);
+  }
+  template <class U>
+    requires detail::real_comparand<Rep, U>
+  friend constexpr BOOL operator!=(const real& a, const U& b) noexcept {
+    return BOOL(a.value_ != detail::real_operand<Rep>(b));
+  }
+  template <class U>
+    requires detail::real_left_comparand<Rep, U>
+  friend constexpr BOOL operator!=(const U& a, const real& b) noexcept {
+    return BOOL(detail::real_operand<Rep>(a) != b.value_);
+  }
+  template <class U>
+    requires detail::real_comparand<Rep, U>
+  friend constexpr BOOL operator<(const real& a, const U& b) noexcept {
+    return BOOL(a.value_ < detail::real_operand<Rep>(b));
+  }
+  template <class U>
+    requires detail::real_left_comparand<Rep, U>
+  friend constexpr BOOL operator<(const U& a, const real& b) noexcept {
+    return BOOL(detail::real_operand<Rep>(a) < b.value_);
+  }
+  template <class U>
+    requires detail::real_comparand<Rep, U>
+  friend constexpr BOOL operator<=(const real& a, const U& b) noexcept {
+    return BOOL(a.value_ <= detail::real_operand<Rep>(b));
+  }
+  template <class U>
+    requires detail::real_left_comparand<Rep, U>
+  friend constexpr BOOL operator<=(const U& a, const real& b) noexcept {
+    return BOOL(detail::real_operand<Rep>(a) <= b.value_);
+  }
+  template <class U>
+    requires detail::real_comparand<Rep, U>
+  friend constexpr BOOL operator>(const real& a, const U& b) noexcept {
+    return BOOL(a.value_ > detail::real_operand<Rep>(b));
+  }
+  template <class U>
+    requires detail::real_left_comparand<Rep, U>
+  friend constexpr BOOL operator>(const U& a, const real& b) noexcept {
+    return BOOL(detail::real_operand<Rep>(a) > b.value_);
+  }
+  template <class U>
+    requires detail::real_comparand<Rep, U>
+  friend constexpr BOOL operator>=(const real& a, const U& b) noexcept {
+    return BOOL(a.value_ >= detail::real_operand<Rep>(b));
+  }
+  template <class U>
+    requires detail::real_left_comparand<Rep, U>
+  friend constexpr BOOL operator>=(const U& a, const real& b) noexcept {
+    return BOOL(detail::real_operand<Rep>(a) >= b.value_);
+  }
+
  private:
   friend struct detail::scalar_access;
   Rep value_ = 0;
@@ -383,6 +1033,8 @@ class real {
 
 template <class Rep>
 struct detail::is_scalar_wrapper<real<Rep>> : std::true_type {};
+template <class Rep>
+struct detail::is_iec_value<real<Rep>> : std::true_type {};
 
 using REAL = real<float>;
 using LREAL = real<double>;
@@ -405,6 +1057,9 @@ concept AnyInteger = detail::is_integer<T>::value;
 /// ANY_INT or ANY_REAL (IEC ANY_NUM).
 template <class T>
 concept AnyNum = AnyInt<T> || AnyReal<T>;
+/// An intermediate result of integer arithmetic (intermediate<T>).
+template <class T>
+concept Intermediate = detail::is_intermediate<T>::value;
 
 }  // namespace iecoop
 

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // iecoop/var.hpp — variable sections whose rules C++ members do not have by themselves:
-//   local<T, Owner>  VAR of a block: readable from outside (as CODESYS allows), written only
-//                    by the block that declares it — write `var<T>` inside a block
+//   local<T, Owner>  VAR of a block: read from outside (as CODESYS allows), written by the
+//                    block and the blocks that extend it — write `var<T>` inside a block
+//   read_only<T, Owner>  a variable only Owner writes (the standard blocks' VAR_OUTPUT)
 //   in_out<T>        VAR_IN_OUT: a reference bound at the call; using it unbound is a fault
 //   output<T>        VAR_OUTPUT of a METHOD or FUNCTION: `"x"_ >> y` copies it out after the call
 //
 // VAR_INPUT and the VAR_OUTPUT of blocks and programs are plain members.
 #pragma once
 
+#include <concepts>
 #include <cstdlib>
 #include <type_traits>
 #include <utility>
@@ -24,16 +26,19 @@ namespace iecoop {
 
 template <class T, class Owner>
 class local;
+template <class T, class Owner>
+class read_only;
 template <class T>
 class in_out;
 
 namespace detail {
 
-/// iecoop's own write access to a block's local: the target of `"Q"_ >> local` in a call.
-struct local_access {
+/// iecoop's own write access to a read_only<> variable: the target of `"Q"_ >> Q` in a call
+/// inside its block.
+struct read_only_access {
   template <class T, class Owner>
-  static constexpr T& ref(local<T, Owner>& variable) noexcept {
-    return variable.value_;
+  static constexpr T& ref(read_only<T, Owner>& variable) noexcept {
+    return variable.ref();
   }
 };
 
@@ -41,6 +46,10 @@ template <class T>
 struct is_local : std::false_type {};
 template <class T, class O>
 struct is_local<local<T, O>> : std::true_type {};
+template <class T>
+struct is_read_only : std::false_type {};
+template <class T, class O>
+struct is_read_only<read_only<T, O>> : std::true_type {};
 template <class T>
 struct is_in_out : std::false_type {};
 template <class T>
@@ -50,7 +59,9 @@ struct is_in_out<in_out<T>> : std::true_type {};
 template <class Target>
 constexpr auto& output_target(Target& target) {
   if constexpr (is_local<Target>::value) {
-    return local_access::ref(target);
+    return target.ref();
+  } else if constexpr (is_read_only<Target>::value) {
+    return read_only_access::ref(target);
   } else if constexpr (is_in_out<Target>::value) {
     return target.get();
   } else {
@@ -69,77 +80,156 @@ constexpr void deliver_output(Target& target, const V& value) {
 
 }  // namespace detail
 
-/**
- * A block's local variable (VAR ... END_VAR): `var<INT> count{5};` inside the block.
- *
- * Everyone can read it (`fb.count`, `fb.count + 1`), as CODESYS lets outside code read a
- * block's locals; only the declaring block `Owner` can assign it (`count = count + 1;`
- * inside Owner's body and methods), as CODESYS forbids writing them from outside — and a
- * call's `"Q"_ >> count` delivers into it. A block derived from Owner reads it too; if it
- * must also write it, declare the variable in a C++ `protected:` section instead (IEC 3rd
- * edition's VAR PROTECTED).
- */
-template <class T, class Owner>
-class local {
+namespace detail {
+
+/// What a block's variable (local<>, read_only<>) is to its readers: its value, with the
+/// operations of its type. Writing is up to the derived class.
+template <class T>
+class variable_value {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
 
-  constexpr local() = default;
-  /// The declaration's initial value: `var<INT> count{5};`
-  constexpr explicit local(const T& initial) : value_(initial) {}
-  constexpr local(const local&) = default;
-
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
-  constexpr const T* operator->() const noexcept { return &value_; }
-  /// `IF bFlag THEN` (the value's own test, which the implicit conversion cannot reach).
+  /// `pos->x` for a STRUCT, `ip->M()` for an interface variable.
+  constexpr decltype(auto) operator->() const noexcept { return arrow_of(value_); }
+  /// An element of an ARRAY (`a[i]`).
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index) const
+    requires requires(const T& v) { v[std::forward<I>(index)]; }
+  {
+    return value_[std::forward<I>(index)];
+  }
+  /// A BOOL variable is a condition like a BOOL (`if (bFlag)`, `bool b = bFlag;`).
+  constexpr operator bool() const noexcept  // NOLINT
+    requires std::is_same_v<T, BOOL>
+  {
+    return static_cast<bool>(value_);
+  }
+  /// `if (ip)` for an interface variable.
   explicit constexpr operator bool() const
-    requires std::is_constructible_v<bool, const T&>
+    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
   {
     return static_cast<bool>(value_);
   }
 
- private:
-  friend Owner;
-  friend struct detail::local_access;
+ protected:
+  constexpr variable_value() = default;
+  constexpr explicit variable_value(const T& initial) : value_(initial) {}
 
-  constexpr local& operator=(const local&) = default;  // Owner's own copies (online change)
   // Values are copied as scalars (detail/scalar_access.hpp), so that the optimiser sees
   // plain loads and stores.
-  constexpr local& operator=(const T& value) {
-    detail::copy_value(value_, value);
-    return *this;
+  constexpr void assign(const T& value) { copy_value(value_, value); }
+  template <class V>
+  constexpr void assign_converted(const V& other) {
+    assign_value(value_, value_of(other));
   }
-  // Non-template operands, so that constants convert as in any assignment (`count += 1`).
-  constexpr local& operator+=(const T& v) {
-    detail::assign_value(value_, value_ + v);
-    return *this;
-  }
-  constexpr local& operator-=(const T& v) {
-    detail::assign_value(value_, value_ - v);
-    return *this;
-  }
-  constexpr local& operator*=(const T& v) {
-    detail::assign_value(value_, value_ * v);
-    return *this;
-  }
-  constexpr local& operator/=(const T& v) {
-    detail::assign_value(value_, value_ / v);
-    return *this;
-  }
-  constexpr local& operator++() {
-    ++value_;
-    return *this;
-  }
-  constexpr local& operator--() {
-    --value_;
-    return *this;
-  }
-  /// Write access for the owner, for members of structured locals: `pos.ref().x = 1;`
-  constexpr T& ref() noexcept { return value_; }
+  [[nodiscard]] constexpr T& storage() noexcept { return value_; }
 
+ private:
   T value_{};
+};
+
+}  // namespace detail
+
+/**
+ * A block's local variable (VAR ... END_VAR): `var<INT> count{5};` inside the block.
+ *
+ * Read like its value everywhere (`fb.count`, `fb.count + 1`), as CODESYS lets outside code
+ * read a block's locals; assigned in the block that declares it and in every block that
+ * EXTENDS it (`count = count + 1;`), with the implicit conversions of ST (a var<INT> into a
+ * var<DINT>, a STRING into a shorter one). CODESYS also rejects writing a block's local from
+ * outside the block; C++ cannot tell a derived block's code from outside code, so iecoop-check
+ * checks that rule (docs/iecoop-check.md). A variable that only its own block may write,
+ * whoever reads it, is a read_only<T, Owner>.
+ */
+template <class T, class Owner>
+class local : public detail::variable_value<T> {
+  using base = detail::variable_value<T>;
+
+ public:
+  /// The block that declares the variable.
+  using owner_type = Owner;
+
+  constexpr local() = default;
+  /// The declaration's initial value: `var<INT> count{5};`
+  constexpr explicit local(const T& initial) : base(initial) {}
+  constexpr local(const local&) = default;
+  /// ST's `a := b` between two locals of the same type.
+  constexpr local& operator=(const local&) = default;
+
+  /// A non-template operand, so that constants convert as in any assignment (`count = 5;`,
+  /// checked while compiling). Compound assignments (`count += 1;`) are those of every
+  /// variable wrapper (detail/value_operators.hpp).
+  constexpr local& operator=(const T& value) {
+    this->assign(value);
+    return *this;
+  }
+  /// From another variable wrapper whose value converts implicitly (`dOut = i;` with a
+  /// var<INT> i into a var<DINT>).
+  template <class V>
+    requires detail::converts_through_wrapper<T, V>
+  constexpr local& operator=(const V& other) {
+    this->assign_converted(other);
+    return *this;
+  }
+
+  /// The variable itself, for members of a structured local (`pos.ref().x = 1;`) and to bind
+  /// a VAR_IN_OUT to it.
+  [[nodiscard]] constexpr T& ref() noexcept { return this->storage(); }
+  using base::operator->;
+  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(this->storage()); }
+  using base::operator[];
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index)
+    requires requires(T& v) { v[std::forward<I>(index)]; }
+  {
+    return this->storage()[std::forward<I>(index)];
+  }
+};
+
+/**
+ * A variable only the block `Owner` writes, read by everyone: the VAR_OUTPUT of the standard
+ * blocks (`tmr.Q` is read, never assigned, from outside, as in ST). Owner assigns it like any
+ * variable, and a call's `"Q"_ >> x` inside Owner delivers into it. Blocks derived from Owner
+ * cannot write it (a C++ friend is not inherited): use var<T> for what they write.
+ */
+template <class T, class Owner>
+class read_only : public detail::variable_value<T> {
+  using base = detail::variable_value<T>;
+
+ public:
+  /// The block that writes the variable.
+  using owner_type = Owner;
+  using iecoop_owner_writes = void;
+
+  constexpr read_only() = default;
+  constexpr explicit read_only(const T& initial) : base(initial) {}
+  constexpr read_only(const read_only&) = default;
+
+ private:
+  friend Owner;
+  friend struct detail::read_only_access;
+
+  constexpr read_only& operator=(const read_only&) = default;  // Owner's own copies (online change)
+  constexpr read_only& operator=(const T& value) {
+    this->assign(value);
+    return *this;
+  }
+  template <class V>
+    requires detail::converts_through_wrapper<T, V>
+  constexpr read_only& operator=(const V& other) {
+    this->assign_converted(other);
+    return *this;
+  }
+  /// Write access for the owner, for members of structured variables: `pos.ref().x = 1;`
+  [[nodiscard]] constexpr T& ref() noexcept { return this->storage(); }
+  // The owner's compound assignments (those of detail/value_operators.hpp are for everyone).
+  constexpr read_only& operator+=(const T& v) { return *this = this->get() + v; }
+  constexpr read_only& operator-=(const T& v) { return *this = this->get() - v; }
+  constexpr read_only& operator++() { return *this = this->get() + T(1); }
+  constexpr read_only& operator--() { return *this = this->get() - T(1); }
 };
 
 /**
@@ -164,6 +254,20 @@ class in_out {
 
   /// Binds to `variable` (ST: `x := variable` in the call; REF= for references).
   constexpr void bind(T& variable) noexcept { target_ = &variable; }
+  /// Binds to the variable inside a wrapper: a block's var<>, a retain<>, or the variable
+  /// another in-out refers to.
+  template <class W>
+    requires requires(W& w) {
+      { w.ref() } -> std::convertible_to<T&>;
+    }
+  constexpr void bind(W& wrapper) noexcept {
+    target_ = &static_cast<T&>(wrapper.ref());
+  }
+  template <class U>
+    requires std::is_convertible_v<U&, T&>
+  constexpr void bind(const in_out<U>& other) {
+    target_ = &static_cast<T&>(other.get());
+  }
   /// TRUE once bound (ST: __ISVALIDREF).
   [[nodiscard]] constexpr bool bound() const noexcept { return target_ != nullptr; }
 
@@ -172,12 +276,26 @@ class in_out {
     return *target_;
   }
   constexpr operator T&() const { return get(); }  // NOLINT: reads as the variable
-  explicit constexpr operator bool() const
-    requires std::is_constructible_v<bool, const value_type&>
+  /// A BOOL in-out is a condition like a BOOL.
+  constexpr operator bool() const  // NOLINT
+    requires std::is_same_v<value_type, BOOL>
   {
     return static_cast<bool>(get());
   }
-  constexpr T* operator->() const { return &get(); }
+  explicit constexpr operator bool() const
+    requires(!std::is_same_v<value_type, BOOL> && std::is_constructible_v<bool, const value_type&>)
+  {
+    return static_cast<bool>(get());
+  }
+  /// `r->x` for a STRUCT, `ip->M()` for an interface variable.
+  constexpr decltype(auto) operator->() const { return detail::arrow_of(get()); }
+  /// An element of an ARRAY (`a[i]`).
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index) const
+    requires requires(T& v) { v[std::forward<I>(index)]; }
+  {
+    return get()[std::forward<I>(index)];
+  }
 
   /// Writes through to the bound variable (a non-template operand, so that constants
   /// convert as in any assignment).
@@ -185,6 +303,14 @@ class in_out {
     requires(!std::is_const_v<T>)
   {
     detail::copy_value(get(), value);
+    return *this;
+  }
+  /// From another variable wrapper whose value converts implicitly.
+  template <class V>
+    requires(!std::is_const_v<T> && detail::converts_through_wrapper<value_type, V> &&
+             !std::is_same_v<std::remove_cvref_t<V>, in_out>)
+  constexpr const in_out& operator=(const V& other) const {
+    detail::assign_value(get(), detail::value_of(other));
     return *this;
   }
   /// ST's `a := b`: copies b's value into a's variable. While an online change copies the
@@ -247,11 +373,26 @@ class output {
     detail::copy_value(value_, value);
     return *this;
   }
+  /// From another variable wrapper whose value converts implicitly.
+  template <class V>
+    requires detail::converts_through_wrapper<T, V>
+  constexpr output& operator=(const V& other) {
+    detail::assign_value(value_, detail::value_of(other));
+    return *this;
+  }
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   constexpr T& ref() noexcept { return value_; }
+  constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }
+  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(value_); }
+  /// A BOOL output is a condition like a BOOL.
+  constexpr operator bool() const noexcept  // NOLINT
+    requires std::is_same_v<T, BOOL>
+  {
+    return static_cast<bool>(value_);
+  }
   explicit constexpr operator bool() const
-    requires std::is_constructible_v<bool, const T&>
+    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
   {
     return static_cast<bool>(value_);
   }

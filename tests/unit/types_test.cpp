@@ -60,23 +60,28 @@ static_assert(std::is_convertible_v<std::int16_t, INT> && std::is_convertible_v<
 // BOOL comes from bool only; INT is no condition.
 static_assert(!std::is_convertible_v<int, BOOL> && !std::is_constructible_v<BOOL, int> && std::is_convertible_v<bool, BOOL>);
 static_assert(!std::is_convertible_v<INT, bool> && !std::is_constructible_v<bool, INT>);
-static_assert(!std::is_convertible_v<BOOL, bool> && std::is_constructible_v<bool, BOOL>);
+// A BOOL is a condition wherever C++ wants one (`bool ok = b;`, std algorithms, doctest).
+static_assert(std::is_convertible_v<BOOL, bool>);
 // REAL: exact integers convert implicitly, LREAL and DINT do not (C0197 in CODESYS).
 static_assert(std::is_convertible_v<INT, REAL> && std::is_convertible_v<UINT, REAL> && !std::is_convertible_v<DINT, REAL>);
 static_assert(std::is_convertible_v<DINT, LREAL> && !std::is_convertible_v<LINT, LREAL> && !std::is_convertible_v<WORD, REAL>);
 static_assert(std::is_convertible_v<REAL, LREAL> && !std::is_convertible_v<LREAL, REAL> && std::is_constructible_v<REAL, LREAL>);
 
-// Mixed arithmetic gives the wider type, as IEC's implicit widening does.
-static_assert(std::is_same_v<decltype(INT() + DINT()), DINT>);
-static_assert(std::is_same_v<decltype(USINT() * INT()), INT>);
+// Arithmetic yields an intermediate result of the wider type, as IEC's implicit widening
+// does; bitwise operations stay in the type.
+static_assert(std::is_same_v<decltype(INT() + DINT()), intermediate<DINT>>);
+static_assert(std::is_same_v<decltype(USINT() * INT()), intermediate<INT>>);
 static_assert(std::is_same_v<decltype(BYTE() | WORD()), WORD>);
-static_assert(std::is_same_v<decltype(INT() + 1), INT>);
+static_assert(std::is_same_v<decltype(INT() + 1), intermediate<INT>>);
+static_assert(std::is_same_v<decltype((INT() + 1) + DINT()), intermediate<DINT>>);
+static_assert(std::is_same_v<decltype(INT() == INT()), BOOL> && std::is_same_v<decltype(INT() < 1), BOOL>);
+static_assert(std::is_same_v<decltype(1 >= INT()), BOOL> && std::is_same_v<decltype((INT() + 1) != 2), BOOL>);
 
-// a + b yields an IEC integer (unrelated types get a poisoned operator returning void,
-// whose body explains the rule when it is instantiated: a compile-fail test checks that).
+// a + b yields an intermediate result (unrelated types get a poisoned operator returning
+// void, whose body explains the rule when it is instantiated: a compile-fail test checks that).
 template <class A, class B>
 concept addable = requires(A a, B b) {
-  { a + b } -> AnyInteger;
+  { a + b } -> Intermediate;
 };
 
 }  // namespace
@@ -97,17 +102,21 @@ TEST_SUITE("elementary types") {
     CHECK(l == 0.0);
   }
 
-  TEST_CASE_TEMPLATE("integer arithmetic wraps around at the type's limits", T, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD) {
+  TEST_CASE_TEMPLATE("integer arithmetic wraps around at the type's limits when assigned", T, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD) {
     // opaque() keeps the compiler from folding: the operations really run, under UBSan
     // in CI, and none of them may be undefined behaviour.
     const T max = opaque(std::numeric_limits<T>::max());
     const T min = opaque(std::numeric_limits<T>::min());
     const T one = opaque(T(typename T::rep{1}));
-    CHECK(max + one == min);
-    CHECK(min - one == max);
+    T x = max + one;
+    CHECK(x == min);
+    x = min - one;
+    CHECK(x == max);
     const T two = opaque(T(typename T::rep{2}));
-    CHECK(max * two + two == T());  // 2 * max + 2 is 2^bits for unsigned types, 0 for signed ones
-    CHECK(-min == (std::is_signed_v<typename T::rep> ? min : T()));
+    x = max * two + two;
+    CHECK(x == T());  // 2 * max + 2 is 2^bits for unsigned types, 0 for signed ones
+    x = -min;
+    CHECK(x == (std::is_signed_v<typename T::rep> ? min : T()));
     T counter = max;
     ++counter;
     CHECK(counter == min);
@@ -119,23 +128,67 @@ TEST_SUITE("elementary types") {
     CHECK(counter == max);
     counter *= max;
     CHECK(counter == one);  // max * max is 1 modulo 2^bits, signed or not
+    // The conversion functions cut an intermediate result to the type, as assignment does.
+    CHECK(static_cast<T>(max + one) == min);
+  }
+
+  TEST_CASE_TEMPLATE("an intermediate result is not cut to its type's width", T, SINT, INT, USINT, UINT, BYTE, WORD) {
+    // Narrower than every register: the sum keeps its carry, as on any CODESYS target.
+    const T max = opaque(std::numeric_limits<T>::max());
+    const T one = opaque(T(typename T::rep{1}));
+    CHECK((max + one) != std::numeric_limits<T>::min());
+    CHECK((max + one) > max);
+    CHECK((max + one) == static_cast<long long>(max.value()) + 1);
+    CHECK((max + one) / 2 == (static_cast<long long>(max.value()) + 1) / 2);
+    // and a variable of a type T widens to keeps it all (dwVar := wVar + 1 is 65536).
+    using wide_t = std::conditional_t<T::kind == integer_kind::bit_string, LWORD, LINT>;
+    const wide_t wide = max + one;
+    CHECK(wide == static_cast<long long>(max.value()) + 1);
+  }
+
+  TEST_CASE("the register width decides what a 32- or 64-bit sum keeps") {
+    // DINT and UDINT fill a 32-bit register exactly: there they wrap at once; on a 64-bit
+    // target (x64, CODESYS's 64 bits) the carry stays until the result is assigned.
+    const DINT max = opaque(DINT(2147483647));
+    const DINT sum = max + 1;
+    CHECK(sum == -2147483647 - 1);
+    if constexpr (register_bits == 64) {
+      CHECK((max + 1) == 2147483648LL);
+      CHECK(((max + 1) > max));
+    } else {
+      CHECK((max + 1) == -2147483647 - 1);
+    }
+    // LINT is 64 bits everywhere: wraps in the expression too.
+    CHECK(opaque(LINT(std::numeric_limits<std::int64_t>::max())) + 1 == std::numeric_limits<std::int64_t>::min());
+    static_assert(intermediate<INT>::bits == register_bits && intermediate<LINT>::bits == 64);
   }
 
   TEST_CASE("DINT and LINT overflow wraps like a PLC, never undefined behaviour") {
-    CHECK(opaque(DINT(2147483647)) + 1 == DINT(-2147483647 - 1));
-    CHECK(opaque(DINT(-2147483647 - 1)) - 1 == 2147483647);
-    CHECK(opaque(DINT(65536)) * opaque(DINT(65536)) == 0);
-    CHECK(opaque(DINT(46341)) * opaque(DINT(46341)) == -2147479015);
-    CHECK(opaque(LINT(std::numeric_limits<std::int64_t>::max())) + 1 == std::numeric_limits<std::int64_t>::min());
-    CHECK(opaque(LINT(3037000500)) * opaque(LINT(3037000500)) == LINT(-9223372036709301616));
+    DINT d = opaque(DINT(2147483647)) + 1;
+    CHECK(d == DINT(-2147483647 - 1));
+    d = opaque(DINT(-2147483647 - 1)) - 1;
+    CHECK(d == 2147483647);
+    d = opaque(DINT(65536)) * opaque(DINT(65536));
+    CHECK(d == 0);
+    d = opaque(DINT(46341)) * opaque(DINT(46341));
+    CHECK(d == -2147479015);
+    LINT l = opaque(LINT(std::numeric_limits<std::int64_t>::max())) + 1;
+    CHECK(l == std::numeric_limits<std::int64_t>::min());
+    l = opaque(LINT(3037000500)) * opaque(LINT(3037000500));
+    CHECK(l == LINT(-9223372036709301616));
     CHECK(-opaque(LINT(std::numeric_limits<std::int64_t>::min())) == std::numeric_limits<std::int64_t>::min());
   }
 
   TEST_CASE("UINT and USINT multiply without the int promotion trap of C++") {
-    // In C++, uint16_t * uint16_t is computed in int: 65535 * 65535 overflows it (UB).
-    CHECK(opaque(UINT(65535)) * opaque(UINT(65535)) == 1);
-    CHECK(opaque(USINT(255)) * opaque(USINT(255)) == 1);
-    CHECK(opaque(WORD(0x8000)) * opaque(WORD(2)) == 0);
+    // In C++, uint16_t * uint16_t is computed in int: 65535 * 65535 overflows it (UB). Here the
+    // register is unsigned: 4294836225, and the low 16 bits are 1.
+    CHECK(opaque(UINT(65535)) * opaque(UINT(65535)) == 4294836225u);
+    UINT u = opaque(UINT(65535)) * opaque(UINT(65535));
+    CHECK(u == 1);
+    USINT us = opaque(USINT(255)) * opaque(USINT(255));
+    CHECK(us == 1);
+    WORD w = opaque(WORD(0x8000)) * opaque(WORD(2));
+    CHECK(w == 0);
   }
 
   TEST_CASE("INT wraps as in the PLC_PRG property example") {
@@ -159,10 +212,15 @@ TEST_SUITE("elementary types") {
 
   TEST_CASE("the most negative value divided by -1 wraps, and its MOD -1 is 0") {
     fault_recorder faults;
+    // In a register as wide as the type, the quotient wraps at once.
     CHECK(opaque(LINT(std::numeric_limits<std::int64_t>::min())) / opaque(LINT(-1)) == std::numeric_limits<std::int64_t>::min());
-    CHECK(opaque(DINT(-2147483647 - 1)) / opaque(DINT(-1)) == -2147483647 - 1);
+    const DINT d = opaque(DINT(-2147483647 - 1)) / opaque(DINT(-1));
+    CHECK(d == -2147483647 - 1);
     CHECK(opaque(DINT(-2147483647 - 1)) % opaque(DINT(-1)) == 0);
-    CHECK(opaque(SINT(-128)) / opaque(SINT(-1)) == -128);
+    // In a wider register, -(-128) is 128 until it is assigned to a SINT.
+    CHECK(opaque(SINT(-128)) / opaque(SINT(-1)) == 128);
+    const SINT s = opaque(SINT(-128)) / opaque(SINT(-1));
+    CHECK(s == -128);
     CHECK(faults.count == 0);
   }
 

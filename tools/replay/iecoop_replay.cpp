@@ -143,14 +143,15 @@ std::string format_pin_value(const T& value) {
 
 // --- Pins -------------------------------------------------------------------------------
 
-/// The type of the variable a pin member designates (outputs are local<T, ...>).
+/// The type of the variable a pin member designates (outputs are read_only<T, ...>).
 template <class T>
 struct pin_value {
   using type = T;
 };
-template <class T, class Owner>
-struct pin_value<local<T, Owner>> {
-  using type = T;
+template <class T>
+  requires iecoop::detail::value_wrapper<T>
+struct pin_value<T> {
+  using type = iecoop::detail::unwrapped_t<const T&>;
 };
 template <class M>
 struct member_type;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/value_operators.hpp — the operators of iecoop's variable wrappers (var<>,
-// in_out<>, output<>, property<>): in an expression a wrapper is its value.
+// in_out<>, output<>, retain<>, persistent<>, located<>, property<>): in an expression a
+// wrapper is its value, and every wrapper that can be written takes the compound
+// assignments of its type — one implementation for all of them.
 // IWYU pragma: private, include <iecoop/iecoop.hpp>
 //
 // A wrapper converts to its value implicitly, but C++ applies only one user-defined
@@ -10,6 +12,9 @@
 // expressions that work on T work on a wrapper of T.
 #pragma once
 
+#include <functional>
+#include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -37,8 +42,22 @@ constexpr decltype(auto) value_of(X&& x) {
 template <class X>
 using unwrapped_t = std::remove_cvref_t<decltype(value_of(std::declval<X>()))>;
 
+template <class X>
+struct is_std_string : std::false_type {};
+template <class C, class Traits, class Alloc>
+struct is_std_string<std::basic_string<C, Traits, Alloc>> : std::true_type {};
+template <class C, class Traits>
+struct is_std_string<std::basic_string_view<C, Traits>> : std::true_type {};
+
+/// What a wrapper's operators take on the other side: a wrapper, an IEC value, a C++ number,
+/// pointer or string — not another library's class with operators of its own (doctest's
+/// expression decomposer, say), which must keep its own.
+template <class X>
+concept wrapper_partner = !std::is_class_v<std::remove_cvref_t<X>> || value_wrapper<X> ||
+                          is_iec_value<std::remove_cvref_t<X>>::value || is_std_string<std::remove_cvref_t<X>>::value;
+
 template <class A, class B>
-concept wrapper_operands = value_wrapper<A> || value_wrapper<B>;
+concept wrapper_operands = (value_wrapper<A> || value_wrapper<B>) && wrapper_partner<A> && wrapper_partner<B>;
 
 // A wrapped integer with a C++ number (`count + 1`) is left to the integer's own operators,
 // which check the constant while compiling (the wrapper converts to the integer for them).
@@ -53,6 +72,47 @@ concept wrapper_arithmetic =
 // a requires-clause, and would recurse for unrelated operands.
 template <bool Enable>
 using enable_for = std::enable_if_t<Enable, int>;
+
+/// A wrapper of T that anyone can assign a T (`w = v`): every wrapper but a read-only one and
+/// one only its block writes (read_only<>, which declares `iecoop_owner_writes` and has
+/// compound assignments of its own for its block).
+template <class W>
+concept writable_wrapper = value_wrapper<W> && !requires { typename std::remove_cvref_t<W>::iecoop_owner_writes; } &&
+                           requires(W&& w, const unwrapped_t<W>& v) { std::forward<W>(w) = v; };
+
+/// A value of V goes into a wrapper of T by assignment where a V would: a wrapper of another
+/// type whose value converts to T implicitly (`dOut = i` with a var<INT> i into a var<DINT>;
+/// C++ would need two conversions, wrapper -> INT -> DINT, and allows one).
+template <class T, class V>
+concept converts_through_wrapper =
+    value_wrapper<V> && !std::is_same_v<unwrapped_t<V>, T> && std::is_convertible_v<unwrapped_t<V>, T>;
+
+/// What `w->m` reaches through a wrapper of T: T's own `->` where it has one (an interface
+/// variable, `ip->M()`), else T's members (`pos->x` for a STRUCT).
+template <class T>
+constexpr decltype(auto) arrow_of(T& value) noexcept {
+  if constexpr (requires { value.operator->(); }) {
+    return (value);  // C++ applies T's own operator-> next
+  } else {
+    return &value;
+  }
+}
+
+/// A compound assignment's right operand that the wrapper's value type does not take as it is
+/// (an intermediate result, or an IEC value of another type): combined with the value by the
+/// operator itself, as ST's `x := x + v` does. A constant or a T goes through the other
+/// overload, which converts it to T at the call (and checks a constant's range there).
+template <class W, class V>
+concept compound_operand = writable_wrapper<W> && !std::is_same_v<unwrapped_t<V>, unwrapped_t<W>> &&
+                           !(std::is_arithmetic_v<std::remove_cvref_t<V>> && AnyInteger<unwrapped_t<W>>);
+
+/// `w = w <op> v` for a wrapper w: read, combine, assign back.
+template <class W, class Op, class V>
+constexpr auto compound_assign(W&& w, Op op, V&& v)
+    -> decltype(std::forward<W>(w) = op(value_of(w), value_of(std::forward<V>(v))), std::forward<W>(w)) {
+  std::forward<W>(w) = op(value_of(w), value_of(std::forward<V>(v)));
+  return std::forward<W>(w);
+}
 
 }  // namespace iecoop::detail
 
@@ -98,10 +158,37 @@ constexpr auto operator^(A&& a, B&& b)
     -> decltype(detail::value_of(std::forward<A>(a)) ^ detail::value_of(std::forward<B>(b))) {
   return detail::value_of(std::forward<A>(a)) ^ detail::value_of(std::forward<B>(b));
 }
+// Comparisons yield what the values' comparison yields (a BOOL for IEC values). Each one is
+// declared, not rewritten from <=>, which would yield a C++ bool.
 template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
 constexpr auto operator==(A&& a, B&& b)
     -> decltype(detail::value_of(std::forward<A>(a)) == detail::value_of(std::forward<B>(b))) {
   return detail::value_of(std::forward<A>(a)) == detail::value_of(std::forward<B>(b));
+}
+template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
+constexpr auto operator!=(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) != detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) != detail::value_of(std::forward<B>(b));
+}
+template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
+constexpr auto operator<(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) < detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) < detail::value_of(std::forward<B>(b));
+}
+template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
+constexpr auto operator<=(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) <= detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) <= detail::value_of(std::forward<B>(b));
+}
+template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
+constexpr auto operator>(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) > detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) > detail::value_of(std::forward<B>(b));
+}
+template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
+constexpr auto operator>=(A&& a, B&& b)
+    -> decltype(detail::value_of(std::forward<A>(a)) >= detail::value_of(std::forward<B>(b))) {
+  return detail::value_of(std::forward<A>(a)) >= detail::value_of(std::forward<B>(b));
 }
 template <class A, class B, detail::enable_for<detail::wrapper_operands<A, B>> = 0>
 constexpr auto operator<=>(A&& a, B&& b)
@@ -119,6 +206,92 @@ constexpr auto operator!(A&& a) -> decltype(!detail::value_of(std::forward<A>(a)
 template <class A, detail::enable_for<detail::value_wrapper<A>> = 0>
 constexpr auto operator~(A&& a) -> decltype(~detail::value_of(std::forward<A>(a))) {
   return ~detail::value_of(std::forward<A>(a));
+}
+
+// Compound assignment of every writable wrapper, as ST's `x := x <op> v`: the value is read,
+// combined and assigned back (for a property: Get, then Set). A T or a constant is the
+// right operand as in any assignment (converted at the call, a constant checked there); an
+// intermediate result or a value of another IEC type is combined as it is.
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator+=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::plus<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator+=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator-=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::minus<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator-=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator*=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator*=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator/=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::divides<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator/=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator%=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::modulus<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator%=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator&=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator&=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator|=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator|=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v));
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr W&& operator^=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
+  return detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
+constexpr auto operator^=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v));
+}
+
+/// `++x` and `--x` on a writable wrapper: x := x + 1.
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr auto operator++(W&& w) -> decltype(++std::declval<detail::unwrapped_t<W>&>(), std::forward<W>(w)) {
+  detail::unwrapped_t<W> value = detail::value_of(w);
+  ++value;
+  std::forward<W>(w) = value;
+  return std::forward<W>(w);
+}
+template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
+constexpr auto operator--(W&& w) -> decltype(--std::declval<detail::unwrapped_t<W>&>(), std::forward<W>(w)) {
+  detail::unwrapped_t<W> value = detail::value_of(w);
+  --value;
+  std::forward<W>(w) = value;
+  return std::forward<W>(w);
 }
 
 }  // namespace iecoop

@@ -1,9 +1,10 @@
 // EXPECT: private
-// A block's VAR cannot be overwritten from outside by copying another block's local into it.
+// A read_only<T, Owner> variable cannot be overwritten from outside by copying another
+// block's variable into it.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
 struct FB : function_block<FB> {
-  var<INT> iCount;
+  read_only<INT, FB> iCount;
   void body() { iCount = iCount + 1; }
 };
 int main() {

@@ -1,9 +1,10 @@
 // EXPECT: private
-// A block's VAR can be read from outside, as CODESYS allows, but not written.
+// A read_only<T, Owner> variable (how the standard blocks declare their outputs) is read
+// from outside but written only by its block.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
 struct FB : function_block<FB> {
-  var<INT> iCount;
+  read_only<INT, FB> iCount;
   void body() { iCount = iCount + 1; }
 };
 int main() {
