@@ -19,7 +19,7 @@ struct FB_Prop : function_block<FB_Prop> {
   INT iValue;
   INT P_Value_Get() { return iValue; }
   void P_Value_Set(INT value) { iValue = value; }
-  [[no_unique_address]] property<INT, &FB_Prop::P_Value_Get, &FB_Prop::P_Value_Set> P_Value;
+  [[no_unique_address]] property<INT, &FB_Prop::P_Value_Get, &FB_Prop::P_Value_Set> P_Value{this};
   void body() {}
 };
 struct plain_prop {

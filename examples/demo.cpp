@@ -98,7 +98,7 @@ struct I_Motor : interface_base<I_Motor> {
 
   // PROPERTY rSpeed : REAL           (* Get only: the speed now, % of nominal *)
   virtual REAL rSpeed_Get() = 0;
-  [[no_unique_address]] property<REAL, &I_Motor::rSpeed_Get> rSpeed;
+  [[no_unique_address]] property<REAL, &I_Motor::rSpeed_Get> rSpeed{this};
 };
 
 // FUNCTION_BLOCK FB_DolMotor IMPLEMENTS I_Motor      (* direct on-line: a contactor, one speed *)
@@ -208,7 +208,7 @@ struct FB_Conveyor : function_block<FB_Conveyor> {
   void rSpeed_Set(REAL value) {            // Set: rSetpoint := LIMIT(rMinSpeed, rSpeed, rMaxSpeed);
     rSetpoint = std::clamp(value, rMinSpeed, rMaxSpeed);
   }
-  [[no_unique_address]] property<REAL, &FB_Conveyor::rSpeed_Get, &FB_Conveyor::rSpeed_Set> rSpeed;
+  [[no_unique_address]] property<REAL, &FB_Conveyor::rSpeed_Get, &FB_Conveyor::rSpeed_Set> rSpeed{this};
 };
 
 // ---------------------------------------------------------------------------------------

@@ -39,7 +39,7 @@ struct FB_Ramp : function_block<FB_Ramp> {
 struct I_Drive : interface_base<I_Drive> {
   virtual void Start() = 0;
   virtual DINT Speed_Get() = 0;
-  [[no_unique_address]] property<DINT, &I_Drive::Speed_Get> Speed;
+  [[no_unique_address]] property<DINT, &I_Drive::Speed_Get> Speed{this};
 };
 struct I_Brake : interface_base<I_Brake> {
   virtual void Hold() = 0;

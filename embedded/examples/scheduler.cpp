@@ -41,7 +41,7 @@ struct I_Motor : interface_base<I_Motor> {
   virtual void Run(args<Run_vars> in) = 0;
   // PROPERTY bRunning : BOOL   (Get only: TRUE once the motor turns at full voltage)
   virtual BOOL bRunning_Get() = 0;
-  [[no_unique_address]] property<BOOL, &I_Motor::bRunning_Get> bRunning;
+  [[no_unique_address]] property<BOOL, &I_Motor::bRunning_Get> bRunning{this};
 };
 
 // FUNCTION_BLOCK FB_StarDelta IMPLEMENTS I_Motor

@@ -95,6 +95,7 @@ struct FB_LiftCylinder : extends<FB_LiftCylinder, FB_Cylinder> {
     run_fb_init(*this, valve, id, load, std::forward<Initial>(initial)...);
   }
   ~FB_LiftCylinder() override { run_fb_exit(*this); }
+  void body() override { SUPER::body(); }  // SUPER^();  (the cylinder's own code)
   FB_LiftCylinder(const FB_LiftCylinder&) = default;
   FB_LiftCylinder& operator=(const FB_LiftCylinder&) = default;
 

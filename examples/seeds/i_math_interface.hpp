@@ -42,7 +42,7 @@ struct I_Math : interface_base<I_Math> {
   // PROPERTY P_Result : REAL
   virtual REAL P_Result_Get() = 0;
   virtual void P_Result_Set(REAL value) = 0;
-  [[no_unique_address]] property<REAL, &I_Math::P_Result_Get, &I_Math::P_Result_Set> P_Result;
+  [[no_unique_address]] property<REAL, &I_Math::P_Result_Get, &I_Math::P_Result_Set> P_Result{this};
 };
 
 // FUNCTION_BLOCK FB_MathMen IMPLEMENTS I_Math      (bodies ours: keeps its result)

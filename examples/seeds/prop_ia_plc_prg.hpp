@@ -31,7 +31,7 @@ struct FB_A : function_block<FB_A> {
   INT prop_iA_Get() { return iA; }  // prop_iA := iA;
   // FB_A.prop_iA.Set
   void prop_iA_Set(INT value) { iA = value; }  // iA := prop_iA;
-  [[no_unique_address]] property<INT, &FB_A::prop_iA_Get, &FB_A::prop_iA_Set> prop_iA;
+  [[no_unique_address]] property<INT, &FB_A::prop_iA_Get, &FB_A::prop_iA_Set> prop_iA{this};
 };
 
 // PROGRAM PLC_PRG

@@ -30,7 +30,7 @@ struct fb_A : function_block<fb_A> {
   INT Value_A_Get() { return iA; }  // Value_A := iA;
   // fb_A.Value_A.Set
   void Value_A_Set(INT value) { iB = value; }  // iB := Value_A;
-  [[no_unique_address]] property<INT, &fb_A::Value_A_Get, &fb_A::Value_A_Set> Value_A;
+  [[no_unique_address]] property<INT, &fb_A::Value_A_Get, &fb_A::Value_A_Set> Value_A{this};
 };
 
 }  // namespace seed_value_a

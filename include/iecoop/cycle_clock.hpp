@@ -78,6 +78,18 @@ class cycle_clock {
   static inline stamp stamp_{};
 };
 
+/// ST's `TIME()` and `LTIME()`, the controller's time since it started: `TIME(system_time)`
+/// and `LTIME(system_time)` (`TIME()` in C++ is a TIME of 0 ms). iecoop's controller time is the
+/// cycle clock: the running task cycle's start, the same all through the cycle (CODESYS reads
+/// its running clock at each call).
+struct system_time_t {
+  template <class Rep, class Period>
+  constexpr operator basic_time<Rep, Period>() const noexcept {  // NOLINT: TIME(system_time)
+    return cycle_clock::now_as<basic_time<Rep, Period>>();
+  }
+};
+inline constexpr system_time_t system_time{};
+
 }  // namespace iecoop
 
 #include <iecoop/detail/pop_macros.hpp>

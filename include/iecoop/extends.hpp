@@ -36,8 +36,10 @@ struct virtual_body_probe : Base {
  * `struct Derived : iecoop::extends<Derived, Base>` is ST's `FUNCTION_BLOCK Derived EXTENDS Base`;
  * `extends<Derived, Base, implements<I_A>>` is `... EXTENDS Base IMPLEMENTS I_A`.
  *
- * Derived is a Base wherever one is expected. Inside Derived, `SUPER::M()` is ST's
- * `SUPER^.M()` (the base implementation), `SUPER::body()` is `SUPER^()` (the base body), and
+ * Derived is a Base wherever one is expected. Derived states its own body, as in CODESYS the
+ * derived block's implementation replaces the base's: `void body() override {}` is an empty
+ * implementation, and `SUPER::body()` in it runs the base's (`SUPER^();`). Inside Derived,
+ * `SUPER::M()` is ST's `SUPER^.M()` (the base implementation), and
  * `this->M()` is `THIS^.M()` (the most derived override). Base must be polymorphic: CODESYS
  * dispatches the body and methods of a block hierarchy virtually, so declare
  * `virtual void body()` (and `virtual` methods) in the base and `override` them here.
@@ -67,6 +69,18 @@ class extends : public detail::interface_layer_t<Derived, Base, Interfaces>, pub
   // Derived's calls, not Base's.
   using detail::block_calls<Derived>::operator();
   using detail::block_calls<Derived>::with;
+
+ private:
+  // In CODESYS a derived block's implementation replaces its base's, and only SUPER^() runs
+  // the base's; C++ would inherit Base's body. So Derived states its own, which overrides this
+  // one; this one only exists to say so (compiled with the block's vtable, wherever a Derived
+  // is constructed).
+  void body() override {
+    static_assert(block_access::declares_own_body<Derived>(),
+                  "iecoop: a block that EXTENDS another states its own body, as CODESYS does not run the base's "
+                  "implementation for it: write `void body() override { SUPER::body(); }` to run the base's "
+                  "(ST: SUPER^();), or `void body() override {}` for an empty implementation");
+  }
 };
 
 }  // namespace iecoop

@@ -31,6 +31,7 @@ enum class fault_kind : std::uint8_t {
   user,                  ///< raised by application code
   duplicate_program,     ///< a second instance of a PROGRAM while the first one lives
   duplicate_globals,     ///< a second instance of a global variable list while the first one lives
+  property_layout,       ///< a PROPERTY member not at its block's address (not [[no_unique_address]])
 };
 
 /// A fault as the handler sees it. `message` points to a string literal.
@@ -54,6 +55,7 @@ using fault_handler = void (*)(const fault_info&);
     case fault_kind::user: return "user fault";
     case fault_kind::duplicate_program: return "second PROGRAM instance";
     case fault_kind::duplicate_globals: return "second instance of a global variable list";
+    case fault_kind::property_layout: return "property not at its block's address";
   }
   return "unknown fault";
 }

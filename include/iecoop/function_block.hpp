@@ -58,6 +58,15 @@ struct block_access {
   static auto fb_reinit(B& block) -> decltype(block.FB_Reinit()) {
     return block.FB_Reinit();
   }
+  /// B declares `void body()` itself (not only inherits one).
+  template <class B>
+  static constexpr bool declares_own_body() noexcept {
+    if constexpr (requires { &B::body; }) {
+      return std::is_same_v<decltype(&B::body), void (B::*)()> || std::is_same_v<decltype(&B::body), void (B::*)() noexcept>;
+    } else {
+      return false;
+    }
+  }
 };
 
 namespace detail {

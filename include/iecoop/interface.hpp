@@ -8,7 +8,7 @@
 //       virtual REAL M_Add(args<M_Add_vars> in) = 0;            // METHOD M_Add : REAL
 //       virtual REAL P_Result_Get() = 0;                        // PROPERTY P_Result : REAL
 //       virtual void P_Result_Set(REAL value) = 0;
-//       [[no_unique_address]] property<REAL, &I_Math::P_Result_Get, &I_Math::P_Result_Set> P_Result;
+//       [[no_unique_address]] property<REAL, &I_Math::P_Result_Get, &I_Math::P_Result_Set> P_Result{this};
 //     };
 //     // FUNCTION_BLOCK FB_MathMen IMPLEMENTS I_Math
 //     struct FB_MathMen : function_block<FB_MathMen, implements<I_Math>> { ... overrides ... };

@@ -17,6 +17,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/fixed_string.hpp>
 #include <iecoop/detail/scalar_access.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/time.hpp>
 #include <iecoop/types.hpp>
@@ -145,7 +146,11 @@ concept checked_integer_argument = cpp_integer<std::remove_cvref_t<V>> && (AnyIn
  */
 template <class Target, class V>
 constexpr void assign_argument(Target& target, V&& value) {
-  if constexpr (detail::checked_integer_argument<Target, V>) {
+  if constexpr (detail::value_wrapper<V> && !detail::value_wrapper<Target>) {
+    // A variable wrapper (a block's var<>, a retain<>, ...) passes its value, which converts
+    // as a plain variable of its type would (a var<INT> into a DINT input).
+    assign_argument(target, detail::value_of(std::forward<V>(value)));
+  } else if constexpr (detail::checked_integer_argument<Target, V>) {
     using rep = typename Target::rep;
     if (!std::in_range<rep>(value)) {
       fault(fault_kind::invalid_value, "argument out of range for the parameter's IEC type; the low bytes are kept");

@@ -6,7 +6,7 @@
 //       INT iA;
 //       INT prop_iA_Get() { return iA; }                  // FB_A.prop_iA.Get:  prop_iA := iA;
 //       void prop_iA_Set(INT value) { iA = value; }       // FB_A.prop_iA.Set:  iA := prop_iA;
-//       [[no_unique_address]] property<INT, &FB_A::prop_iA_Get, &FB_A::prop_iA_Set> prop_iA;
+//       [[no_unique_address]] property<INT, &FB_A::prop_iA_Get, &FB_A::prop_iA_Set> prop_iA{this};
 //       void body() { iA = iA + 1; }
 //     };
 //
@@ -16,7 +16,10 @@
 //
 // A property holds no data. Declared [[no_unique_address]] — always: it is how the property
 // finds its block — it adds no bytes, sits at its owner's own address (GCC and Clang place an
-// empty member there) and compiles to the accessor call. The accessors are ordinary member
+// empty member there, following the Itanium C++ ABI) and compiles to the accessor call. Its
+// initializer `{this}` hands it the block under construction, so that it checks that address
+// once: a property declared without [[no_unique_address]] is a fault (property_layout) when
+// its block is constructed, never a read of other bytes. The accessors are ordinary member
 // functions: virtual to be overridable, pure virtual for an ABSTRACT property, final for a
 // FINAL one. The property's access modifier is the section it is declared in; an accessor's
 // own PRIVATE is the option owner_only_get / owner_only_set (PROTECTED: the same, and derived
@@ -25,15 +28,22 @@
 #pragma once
 
 #include <compare>
+#include <cstdlib>
 #include <new>
 #include <type_traits>
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/value_operators.hpp>
+#include <iecoop/fault.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
+
+#if defined(_MSC_VER) && !defined(__clang__)
+#  error "iecoop: property<> needs [[no_unique_address]] as GCC and Clang implement it (MSVC ignores the attribute)"
+#endif
 
 namespace iecoop {
 
@@ -108,7 +118,7 @@ concept widens_to = !std::is_same_v<U, T> && std::is_convertible_v<const T&, U> 
 /**
  * A PROPERTY of type T with accessors `Get` (a member function returning T, or nullptr for
  * a write-only property) and `Set` (a member function taking T, or nullptr for a read-only
- * one). Declare it `[[no_unique_address]]`. Options: owner_only_get, owner_only_set,
+ * one). Declare it `[[no_unique_address]] property<...> Name{this};`. Options: owner_only_get, owner_only_set,
  * monitoring::variable<&Owner::shadow>.
  */
 template <class T, auto Get, auto Set = nullptr, class... Options>
@@ -137,7 +147,22 @@ class property {
   static constexpr bool readable = !std::is_same_v<decltype(Get), std::nullptr_t>;
   static constexpr bool writable = !std::is_same_v<decltype(Set), std::nullptr_t>;
 
-  constexpr property() noexcept = default;
+  /// `[[no_unique_address]] property<...> Name{this};` — the block (or interface, program,
+  /// list of global variables) under construction, whose address the property must share.
+  template <class Block>
+    requires std::is_convertible_v<Block*, owner_type*>
+  constexpr explicit property(Block* block) noexcept {
+    if (!std::is_constant_evaluated()) {
+      if (static_cast<const void*>(this) != static_cast<const void*>(static_cast<owner_type*>(block))) misplaced();
+    }
+  }
+  /// Without `{this}` a property could not check where it is.
+  template <class Self = property>
+  constexpr property() noexcept {
+    static_assert(detail::dependent_false<Self>,
+                  "iecoop: a property is declared `[[no_unique_address]] property<T, &FB::Name_Get, &FB::Name_Set> "
+                  "Name{this};` — the initializer {this} lets it check that it sits at its block's address");
+  }
 
   // Reading through a non-const block calls Get on it; through a const block, a const Get
   // (`T Name_Get() const`) is called as const (see read() const).
@@ -328,8 +353,15 @@ class property {
     }
   }
 
+  [[noreturn]] static void misplaced() {
+    fault(fault_kind::property_layout,
+          "a property is not at its block's address: declare it [[no_unique_address]] (GCC or Clang); it cannot "
+          "reach its block");
+    std::abort();
+  }
+
   // The property is an empty member at offset 0 of its owner, so the owner lives at its
-  // address (see docs/design.md, "Properties").
+  // address (checked when the owner is constructed; see docs/design.md, "Properties").
   owner_type& owner() noexcept { return *std::launder(reinterpret_cast<owner_type*>(this)); }
   const owner_type& owner() const noexcept { return *std::launder(reinterpret_cast<const owner_type*>(this)); }
 

@@ -14,7 +14,7 @@ struct FB_A : function_block<FB_A> {
   INT iB;
   INT prop_iA_Get() { return iA; }
   void prop_iA_Set(INT value) { iB = value; }
-  [[no_unique_address]] property<INT, &FB_A::prop_iA_Get, &FB_A::prop_iA_Set> prop_iA;
+  [[no_unique_address]] property<INT, &FB_A::prop_iA_Get, &FB_A::prop_iA_Set> prop_iA{this};
   void body() { iA = iA + 1; }
 };
 
@@ -34,7 +34,7 @@ struct FB_Add : function_block<FB_Add> {
 struct I_Math : interface_base<I_Math> {
   virtual REAL M_Add(REAL value) = 0;
   virtual REAL P_Result_Get() = 0;
-  [[no_unique_address]] property<REAL, &I_Math::P_Result_Get> P_Result;
+  [[no_unique_address]] property<REAL, &I_Math::P_Result_Get> P_Result{this};
 };
 
 extern "C" {

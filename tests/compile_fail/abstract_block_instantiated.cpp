@@ -8,7 +8,9 @@ struct FB_Abstract : function_block<FB_Abstract> {
  protected:
   FB_Abstract() = default;  // FUNCTION_BLOCK ABSTRACT FB_Abstract
 };
-struct FB_Concrete : extends<FB_Concrete, FB_Abstract> {};
+struct FB_Concrete : extends<FB_Concrete, FB_Abstract> {
+  void body() override {}
+};
 int main() {
 #ifdef IECOOP_COMPILE_FAIL
   FB_Abstract fb;

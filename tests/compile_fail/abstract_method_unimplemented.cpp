@@ -9,6 +9,7 @@ struct FB_Axis : function_block<FB_Axis> {
   virtual LREAL Position() = 0;  // METHOD ABSTRACT Position : LREAL
 };
 struct FB_Linear : extends<FB_Linear, FB_Axis> {
+  void body() override {}
 #ifndef IECOOP_COMPILE_FAIL
   LREAL Position() override { return 0.0; }
 #endif

@@ -9,6 +9,7 @@ struct fbA : function_block<fbA> {
   virtual void body() {}
 };
 struct fbB : extends<fbB, fbA> {
+  void body() override {}
 #ifdef IECOOP_COMPILE_FAIL
   INT x;
   using VAR_INPUT = pins<&fbB::x>;

@@ -7,10 +7,18 @@ struct FB_Base : function_block<FB_Base> {
   virtual void body() {}
 };
 #ifdef IECOOP_COMPILE_FAIL
-struct FB_Final final : extends<FB_Final, FB_Base> {};
-struct FB_More : extends<FB_More, FB_Final> {};
+struct FB_Final final : extends<FB_Final, FB_Base> {
+  void body() override {}
+};
+struct FB_More : extends<FB_More, FB_Final> {
+  void body() override {}
+};
 #else
-struct FB_Final : extends<FB_Final, FB_Base> {};
-struct FB_More : extends<FB_More, FB_Final> {};
+struct FB_Final : extends<FB_Final, FB_Base> {
+  void body() override {}
+};
+struct FB_More : extends<FB_More, FB_Final> {
+  void body() override {}
+};
 #endif
 int main() { FB_More fb; fb(); }

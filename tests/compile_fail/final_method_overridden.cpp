@@ -12,6 +12,7 @@ struct FB_Base : function_block<FB_Base> {
 #endif
 };
 struct FB_Derived : extends<FB_Derived, FB_Base> {
+  void body() override {}
   INT Count() override { return 2; }
 };
 int main() { FB_Derived fb; return fb.Count() == 2 ? 0 : 1; }

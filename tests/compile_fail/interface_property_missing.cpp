@@ -6,7 +6,7 @@ using namespace iecoop;
 struct I_Math : interface_base<I_Math> {
   virtual REAL P_Result_Get() = 0;  // PROPERTY P_Result : REAL
   virtual void P_Result_Set(REAL value) = 0;
-  [[no_unique_address]] property<REAL, &I_Math::P_Result_Get, &I_Math::P_Result_Set> P_Result;
+  [[no_unique_address]] property<REAL, &I_Math::P_Result_Get, &I_Math::P_Result_Set> P_Result{this};
 };
 struct FB_Math : function_block<FB_Math, implements<I_Math>> {
   REAL rResult;

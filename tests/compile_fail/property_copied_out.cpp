@@ -6,7 +6,7 @@ using namespace iecoop;
 struct FB_A : function_block<FB_A> {
   INT iA;
   INT prop_iA_Get() const { return iA; }
-  [[no_unique_address]] property<INT, &FB_A::prop_iA_Get> prop_iA;
+  [[no_unique_address]] property<INT, &FB_A::prop_iA_Get> prop_iA{this};
   void body() { iA = iA + 1; }
 };
 int main() {

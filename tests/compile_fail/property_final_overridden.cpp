@@ -7,7 +7,7 @@ struct FB_Base : function_block<FB_Base> {
   virtual void body() {}
   INT iValue;
   virtual INT Value_Get() final { return iValue; }  // PROPERTY FINAL Value : INT
-  [[no_unique_address]] property<INT, &FB_Base::Value_Get> Value;
+  [[no_unique_address]] property<INT, &FB_Base::Value_Get> Value{this};
 };
 struct FB_Derived : extends<FB_Derived, FB_Base> {
 #ifdef IECOOP_COMPILE_FAIL

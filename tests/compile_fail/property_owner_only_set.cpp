@@ -6,7 +6,7 @@ struct FB_Counter : function_block<FB_Counter> {
   DINT dCount;
   DINT Count_Get() const { return dCount; }
   void Count_Set(DINT value) { dCount = value; }
-  [[no_unique_address]] property<DINT, &FB_Counter::Count_Get, &FB_Counter::Count_Set, owner_only_set> Count;
+  [[no_unique_address]] property<DINT, &FB_Counter::Count_Get, &FB_Counter::Count_Set, owner_only_set> Count{this};
   void body() { Count = Count + 1; }  // inside the block: fine
 };
 int main() {

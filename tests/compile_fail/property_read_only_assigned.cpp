@@ -7,9 +7,9 @@ struct FB_Tank : function_block<FB_Tank> {
   INT Level_Get() const { return iLevel; }
 #ifndef IECOOP_COMPILE_FAIL
   void Level_Set(INT value) { iLevel = value; }
-  [[no_unique_address]] property<INT, &FB_Tank::Level_Get, &FB_Tank::Level_Set> Level;
+  [[no_unique_address]] property<INT, &FB_Tank::Level_Get, &FB_Tank::Level_Set> Level{this};
 #else
-  [[no_unique_address]] property<INT, &FB_Tank::Level_Get> Level;  // PROPERTY Level : INT (Get only)
+  [[no_unique_address]] property<INT, &FB_Tank::Level_Get> Level{this};  // PROPERTY Level : INT (Get only)
 #endif
   void body() {}
 };

@@ -7,9 +7,9 @@ struct FB_Valve : function_block<FB_Valve> {
   void Opening_Set(REAL value) { rOpening = value; }
 #ifndef IECOOP_COMPILE_FAIL
   REAL Opening_Get() const { return rOpening; }
-  [[no_unique_address]] property<REAL, &FB_Valve::Opening_Get, &FB_Valve::Opening_Set> Opening;
+  [[no_unique_address]] property<REAL, &FB_Valve::Opening_Get, &FB_Valve::Opening_Set> Opening{this};
 #else
-  [[no_unique_address]] property<REAL, nullptr, &FB_Valve::Opening_Set> Opening;  // Set only
+  [[no_unique_address]] property<REAL, nullptr, &FB_Valve::Opening_Set> Opening{this};  // Set only
 #endif
   void body() {}
 };

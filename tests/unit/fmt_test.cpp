@@ -36,7 +36,7 @@ TEST_SUITE("fmt") {
       var<TIME> tElapsed{"T#1s500ms"_iec};
       INT iLevel = 42;
       INT Level_Get() const { return iLevel; }
-      [[no_unique_address]] property<INT, &FB_Shown::Level_Get> Level;
+      [[no_unique_address]] property<INT, &FB_Shown::Level_Get> Level{this};
       void body() {}
     };
     FB_Shown fb;

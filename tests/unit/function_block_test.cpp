@@ -73,6 +73,7 @@ struct FB_Machine : function_block<FB_Machine> {
 };
 struct FB_SafeMachine : extends<FB_SafeMachine, FB_Machine> {
   BOOL bSafe;
+  void body() override { SUPER::body(); }  // SUPER^();
   void Stop() override {  // the action, overridden
     SUPER::Stop();
     bSafe = TRUE;
@@ -106,6 +107,7 @@ struct FB_AbstractAxis : function_block<FB_AbstractAxis> {
 };
 struct FB_Axis final : extends<FB_Axis, FB_AbstractAxis> {  // FUNCTION_BLOCK FINAL FB_Axis EXTENDS FB_AbstractAxis
   LREAL Position() override { return 1.5; }
+  void body() override { SUPER::body(); }  // SUPER^();
 };
 
 // STRUCT EXTENDS

@@ -26,7 +26,7 @@ struct I_Counter : interface_base<I_Counter> {
   virtual void Count(args<Count_vars> in = {}) = 0;
   virtual DINT Value_Get() = 0;
   virtual void Value_Set(DINT value) = 0;
-  [[no_unique_address]] property<DINT, &I_Counter::Value_Get, &I_Counter::Value_Set> Value;
+  [[no_unique_address]] property<DINT, &I_Counter::Value_Get, &I_Counter::Value_Set> Value{this};
 };
 
 // INTERFACE I_Device EXTENDS I_Named, I_Counter  METHOD Enabled : BOOL
@@ -171,6 +171,7 @@ struct FB_LeftOnly : function_block<FB_LeftOnly, implements<I_Left>> {
   INT Left() override { return 1; }
 };
 struct FB_RightToo : extends<FB_RightToo, FB_LeftOnly, implements<I_Right>> {
+  void body() override {}  // an empty implementation
   INT Right() override { return 2; }
 };
 
@@ -260,10 +261,12 @@ struct FB_AbstractCounter : function_block<FB_AbstractCounter, implements<I_Coun
   // Count stays ABSTRACT
 };
 struct FB_Concrete : extends<FB_Concrete, FB_AbstractCounter, implements<I_Extra>> {
+  void body() override {}  // an empty implementation
   void Count(args<Count_vars> in = {}) override { dValue = dValue + in.dStep * DINT(10); }
   INT Extra() override { return 3; }
 };
 struct FB_ConcretePlus : extends<FB_ConcretePlus, FB_Concrete> {
+  void body() override {}  // an empty implementation
   void Count(args<Count_vars> in = {}) override { dValue = dValue + in.dStep; }
 };
 
@@ -423,10 +426,12 @@ struct FB_Base : function_block<FB_Base, implements<I_Root>> {
 };
 // FUNCTION_BLOCK FB_Derived EXTENDS FB_Base IMPLEMENTS I_Left  (the base's interface, extended)
 struct FB_Derived : extends<FB_Derived, FB_Base, implements<I_Left>> {
+  void body() override {}  // an empty implementation
   INT Left() override { return 20; }
 };
 // FUNCTION_BLOCK FB_Again EXTENDS FB_Base IMPLEMENTS I_Root, I_Left  (repeated, as CODESYS allows)
 struct FB_Again : extends<FB_Again, FB_Base, implements<I_Root, I_Left>> {
+  void body() override {}  // an empty implementation
   INT Id() override { return 30; }
   INT Left() override { return 31; }
 };

@@ -27,13 +27,13 @@ struct FB_Tank : function_block<FB_Tank> {
     ++sets;
     iLevel = value > iMax ? iMax : value;  // a property filters what it stores
   }
-  [[no_unique_address]] property<INT, &FB_Tank::Level_Get, &FB_Tank::Level_Set> Level;
+  [[no_unique_address]] property<INT, &FB_Tank::Level_Get, &FB_Tank::Level_Set> Level{this};
 
   BOOL Full_Get() const { return iLevel >= iMax; }
-  [[no_unique_address]] property<BOOL, &FB_Tank::Full_Get> Full;
+  [[no_unique_address]] property<BOOL, &FB_Tank::Full_Get> Full{this};
 
   REAL Ratio_Get() const { return REAL(iLevel) / REAL(iMax); }
-  [[no_unique_address]] property<REAL, &FB_Tank::Ratio_Get> Ratio;
+  [[no_unique_address]] property<REAL, &FB_Tank::Ratio_Get> Ratio{this};
 
   void body() {}
 };
@@ -131,7 +131,7 @@ TEST_SUITE("PROPERTY") {
         ++sets;
         iValue = value;
       }
-      [[no_unique_address]] property<INT, &FB_Copier::Value_Get, &FB_Copier::Value_Set> Value;
+      [[no_unique_address]] property<INT, &FB_Copier::Value_Get, &FB_Copier::Value_Set> Value{this};
       void TakeFrom(const FB_Copier& other) { Value = other.Value; }
       void body() {}
     };
@@ -189,10 +189,10 @@ struct FB_Setpoint : function_block<FB_Setpoint> {
   LREAL rTarget;
   // PROPERTY Target : LREAL (Set only: write-only)
   void Target_Set(LREAL value) { rTarget = value; }
-  [[no_unique_address]] property<LREAL, nullptr, &FB_Setpoint::Target_Set> Target;
+  [[no_unique_address]] property<LREAL, nullptr, &FB_Setpoint::Target_Set> Target{this};
   // PROPERTY Reached : BOOL (Get only: read-only)
   BOOL Reached_Get() const { return rTarget > 10.0; }
-  [[no_unique_address]] property<BOOL, &FB_Setpoint::Reached_Get> Reached;
+  [[no_unique_address]] property<BOOL, &FB_Setpoint::Reached_Get> Reached{this};
   void body() {}
 };
 
@@ -225,7 +225,7 @@ struct FB_Counter : function_block<FB_Counter> {
   DINT Count_Get() const { return dCount; }
   void Count_Set(DINT value) { dCount = value; }
   // PROPERTY Count : DINT    Get: PUBLIC    Set: PRIVATE
-  [[no_unique_address]] property<DINT, &FB_Counter::Count_Get, &FB_Counter::Count_Set, owner_only_set> Count;
+  [[no_unique_address]] property<DINT, &FB_Counter::Count_Get, &FB_Counter::Count_Set, owner_only_set> Count{this};
 
   BOOL bPulse;
   void body() {
@@ -244,7 +244,7 @@ struct FB_Base : function_block<FB_Base> {
   INT Hidden_Get() const { return iHidden; }
   void Hidden_Set(INT value) { iHidden = value; }
   // PROPERTY PROTECTED Hidden : INT
-  [[no_unique_address]] property<INT, &FB_Base::Hidden_Get, &FB_Base::Hidden_Set> Hidden;
+  [[no_unique_address]] property<INT, &FB_Base::Hidden_Get, &FB_Base::Hidden_Set> Hidden{this};
 };
 struct FB_Derived : extends<FB_Derived, FB_Base> {
   INT iSeen;
@@ -278,7 +278,7 @@ TEST_SUITE("PROPERTY") {
       REAL rGain = REAL(2.5f);
       REAL Gain_Get() const { return rGain; }
       void Gain_Set(REAL value) { rGain = value; }
-      [[no_unique_address]] property<REAL, &FB_Secret::Gain_Get, &FB_Secret::Gain_Set, owner_only_get> Gain;
+      [[no_unique_address]] property<REAL, &FB_Secret::Gain_Get, &FB_Secret::Gain_Set, owner_only_get> Gain{this};
       BOOL bHigh;
       REAL rScaled;
       void body() {
@@ -326,21 +326,22 @@ struct FB_Sensor : function_block<FB_Sensor> {
   virtual void body() {}
   // PROPERTY ABSTRACT Value : LREAL
   virtual LREAL Value_Get() = 0;
-  [[no_unique_address]] property<LREAL, &FB_Sensor::Value_Get> Value;
+  [[no_unique_address]] property<LREAL, &FB_Sensor::Value_Get> Value{this};
   // PROPERTY Scale : LREAL (overridable)
   LREAL rScale = 1.0;
   virtual LREAL Scale_Get() { return rScale; }
   virtual void Scale_Set(LREAL value) { rScale = value; }
-  [[no_unique_address]] property<LREAL, &FB_Sensor::Scale_Get, &FB_Sensor::Scale_Set> Scale;
+  [[no_unique_address]] property<LREAL, &FB_Sensor::Scale_Get, &FB_Sensor::Scale_Set> Scale{this};
 };
 
 struct FB_Thermo : extends<FB_Thermo, FB_Sensor> {
+  void body() override {}  // an empty implementation
   LREAL rRaw = 21.5;
   LREAL Value_Get() final { return rRaw * Scale; }  // implements Value, FINAL
   void Scale_Set(LREAL value) override { rScale = value < 0.0 ? LREAL(0.0) : value; }  // overrides Set only
   // A property of the derived block itself (its owner starts with the base's data).
   LREAL Raw_Get() const { return rRaw; }
-  [[no_unique_address]] property<LREAL, &FB_Thermo::Raw_Get> Raw;
+  [[no_unique_address]] property<LREAL, &FB_Thermo::Raw_Get> Raw{this};
 };
 
 }  // namespace
@@ -371,7 +372,7 @@ struct FB_Monitored : function_block<FB_Monitored> {
     return iValue;
   }
   // {attribute 'monitoring' := 'call'}
-  [[no_unique_address]] property<INT, &FB_Monitored::Called_Get> Called;
+  [[no_unique_address]] property<INT, &FB_Monitored::Called_Get> Called{this};
 
   INT Recorded_monitor;  // the implicit variable 'variable' monitoring shows
   INT Recorded_Get() {
@@ -382,7 +383,7 @@ struct FB_Monitored : function_block<FB_Monitored> {
   // {attribute 'monitoring' := 'variable'}
   [[no_unique_address]] property<INT, &FB_Monitored::Recorded_Get, &FB_Monitored::Recorded_Set,
                                  monitoring::variable<&FB_Monitored::Recorded_monitor>>
-      Recorded;
+      Recorded{this};
 
   void body() {}
 };
@@ -418,7 +419,7 @@ namespace {
 struct PRG_Line : program<PRG_Line> {
   UDINT udParts;
   UDINT Parts_Get() const { return udParts; }
-  [[no_unique_address]] property<UDINT, &PRG_Line::Parts_Get> Parts;
+  [[no_unique_address]] property<UDINT, &PRG_Line::Parts_Get> Parts{this};
   void body() { udParts = udParts + 1U; }
 };
 
@@ -427,7 +428,7 @@ struct GVL {
   INT gMode;
   STRING<> ModeName_Get() const { return gMode == 0 ? STRING<>("Manual") : STRING<>("Auto"); }
   void ModeName_Set(STRING<> value) { gMode = value == "Auto" ? INT(1) : INT(0); }
-  [[no_unique_address]] property<STRING<>, &GVL::ModeName_Get, &GVL::ModeName_Set> ModeName;
+  [[no_unique_address]] property<STRING<>, &GVL::ModeName_Get, &GVL::ModeName_Set> ModeName{this};
 };
 
 }  // namespace
@@ -449,5 +450,144 @@ TEST_SUITE("PROPERTY") {
     CHECK(gvl.ModeName.get() == "Auto");
     static_assert(sizeof(GVL) == sizeof(INT));
     CHECK(static_cast<void*>(&gvl.ModeName) == static_cast<void*>(&gvl));
+  }
+}
+
+// Where a property sits, in every shape of block it is allowed in: each one is at its owner's
+// address (which its constructor checked, faulting otherwise), so its accessors reach the
+// owner's variables.
+namespace {
+
+template <class Owner, class P>
+bool at_owner(Owner& owner, P& property) {
+  return static_cast<const void*>(&property) == static_cast<const void*>(&owner);
+}
+
+// A block with a vtable, the property after variables and a nested block.
+struct FB_ShapeVirtual : function_block<FB_ShapeVirtual> {
+  DINT dFirst = 7;
+  TON tDelay;
+  INT iValue;
+  virtual INT Value_Get() { return iValue; }
+  virtual void Value_Set(INT value) { iValue = value; }
+  [[no_unique_address]] property<INT, &FB_ShapeVirtual::Value_Get, &FB_ShapeVirtual::Value_Set> Value{this};
+  LREAL lLast = 1.5;
+  virtual void body() {}
+};
+// EXTENDS: the derived block overrides the base's accessor and adds a property of its own;
+// a third level adds another.
+struct FB_ShapeDerived : extends<FB_ShapeDerived, FB_ShapeVirtual> {
+  BOOL bSeen;
+  INT Value_Get() override { return iValue + 1000; }
+  BOOL Seen_Get() { return bSeen; }
+  void Seen_Set(BOOL value) { bSeen = value; }
+  [[no_unique_address]] property<BOOL, &FB_ShapeDerived::Seen_Get, &FB_ShapeDerived::Seen_Set> Seen{this};
+  void body() override {}
+};
+struct FB_ShapeThird : extends<FB_ShapeThird, FB_ShapeDerived> {
+  STRING<8> sName = "third";
+  STRING<8> Name_Get() { return sName; }
+  [[no_unique_address]] property<STRING<8>, &FB_ShapeThird::Name_Get> Name{this};
+  void body() override {}
+};
+
+// Interfaces (virtual bases of their blocks), each with a property.
+struct I_Speed : interface_base<I_Speed> {
+  virtual REAL Speed_Get() = 0;
+  virtual void Speed_Set(REAL value) = 0;
+  [[no_unique_address]] property<REAL, &I_Speed::Speed_Get, &I_Speed::Speed_Set> Speed{this};
+};
+struct I_Named : interface_base<I_Named> {
+  virtual STRING<8> Label_Get() = 0;
+  [[no_unique_address]] property<STRING<8>, &I_Named::Label_Get> Label{this};
+};
+struct I_Drive : interface_base<I_Drive, I_Speed, I_Named> {};
+struct FB_ShapeDrive : function_block<FB_ShapeDrive, implements<I_Drive>> {
+  INT iPad;
+  REAL rSpeed;
+  REAL Speed_Get() override { return rSpeed; }
+  void Speed_Set(REAL value) override { rSpeed = value; }
+  STRING<8> Label_Get() override { return "drive"; }
+  BOOL On_Get() { return rSpeed > 0.0f; }
+  [[no_unique_address]] property<BOOL, &FB_ShapeDrive::On_Get> On{this};
+  virtual void body() {}
+};
+struct FB_ShapeLoggedDrive : extends<FB_ShapeLoggedDrive, FB_ShapeDrive> {
+  DINT dWrites;
+  void Speed_Set(REAL value) override {
+    dWrites = dWrites + 1;
+    FB_ShapeDrive::Speed_Set(value);
+  }
+  void body() override {}
+};
+
+// A plain struct (a list of global variables without the list's base), with a property.
+struct ST_Plain {
+  INT iRaw;
+  INT Scaled_Get() { return iRaw * 10; }
+  [[no_unique_address]] property<INT, &ST_Plain::Scaled_Get> Scaled{this};
+};
+
+}  // namespace
+
+TEST_SUITE("PROPERTY") {
+  TEST_CASE("a property sits at its owner's address in a block with a vtable and nested blocks") {
+    FB_ShapeVirtual fb;
+    CHECK(at_owner(fb, fb.Value));
+    fb.Value = 5;
+    CHECK(fb.iValue == 5);
+    CHECK(fb.Value == 5);
+    CHECK(fb.dFirst == 7);
+    CHECK(fb.lLast == 1.5);
+  }
+
+  TEST_CASE("along an EXTENDS chain, each level's property sits at its level's address") {
+    FB_ShapeThird fb;
+    CHECK(at_owner(static_cast<FB_ShapeVirtual&>(fb), fb.Value));
+    CHECK(at_owner(static_cast<FB_ShapeDerived&>(fb), fb.Seen));
+    CHECK(at_owner(fb, fb.Name));
+    fb.Value = 3;
+    CHECK(fb.iValue == 3);
+    CHECK(fb.Value == 1003);  // FB_ShapeDerived's override of the Get accessor
+    FB_ShapeVirtual& base = fb;
+    CHECK(base.Value == 1003);
+    fb.Seen = TRUE;
+    CHECK(fb.bSeen == TRUE);
+    CHECK(fb.Name == "third");
+  }
+
+  TEST_CASE("an interface's property sits at the interface part of the block, wherever that is") {
+    FB_ShapeLoggedDrive fb;
+    I_Speed& speed = fb;
+    I_Named& named = fb;
+    CHECK(at_owner(speed, fb.Speed));
+    CHECK(at_owner(named, fb.Label));
+    CHECK(at_owner(static_cast<FB_ShapeDrive&>(fb), fb.On));
+    itf<I_Drive> ip = fb;
+    ip->Speed = 2.5f;  // ip.Speed := 2.5;  (the derived block's Set)
+    CHECK(fb.rSpeed == 2.5f);
+    CHECK(fb.dWrites == 1);
+    CHECK(ip->Speed == 2.5f);
+    CHECK(ip->Label == "drive");
+    CHECK(fb.On == TRUE);
+  }
+
+  TEST_CASE("a plain struct's property") {
+    ST_Plain plain;
+    CHECK(at_owner(plain, plain.Scaled));
+    plain.iRaw = 4;
+    CHECK(plain.Scaled == 40);
+  }
+
+  TEST_CASE("no property adds a byte to its owner") {
+    struct FB_ShapeVirtualData : function_block<FB_ShapeVirtualData> {
+      DINT dFirst = 7;
+      TON tDelay;
+      INT iValue;
+      LREAL lLast = 1.5;
+      virtual void body() {}
+    };
+    CHECK(sizeof(FB_ShapeVirtual) == sizeof(FB_ShapeVirtualData));
+    CHECK(sizeof(ST_Plain) == sizeof(INT));
   }
 }

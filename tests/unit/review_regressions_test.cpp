@@ -52,9 +52,11 @@ struct Base : function_block<Base> {
   virtual void M(args<M_vars> in) { in.r = in.a * 2; }
 };
 struct Forwarding : extends<Forwarding, Base> {
+  void body() override {}  // an empty implementation
   void M(args<M_vars> in) override { SUPER::M(in); }  // SUPER^.M(a := a, r => r);
 };
 struct Adding : extends<Adding, Base> {
+  void body() override {}  // an empty implementation
   void M(args<M_vars> in) override {
     SUPER::M(std::move(in));
     in.r = in.r + 1;  // r := r + 1;
