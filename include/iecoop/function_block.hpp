@@ -122,14 +122,130 @@ constexpr void apply_output(const B& block, const A& argument) {
   }
 }
 
-/// One call of a block: inputs, body, outputs (ST: inst(IN := x, Q => y)).
+template <class B>
+using spelled_inputs_t = typename spelled_pins<typename concat_pins<inputs_of<B>, in_outs_of<B>>::type>::type;
+template <class B>
+using spelled_outputs_t = typename spelled_pins<outputs_of<B>>::type;
+
+/// The name of argument A is one the block B has (an input or in-out for `:=`, an output for
+/// `=>`); a positional argument has none.
+template <class B, class A>
+constexpr bool known_name() noexcept {
+  using arg = std::remove_cvref_t<A>;
+  if constexpr (NamedInput<A>) {
+    return inputs_of<B>::index_of(arg::name) < inputs_of<B>::size || in_outs_of<B>::index_of(arg::name) < in_outs_of<B>::size;
+  } else if constexpr (NamedOutput<A>) {
+    return outputs_of<B>::index_of(arg::name) < outputs_of<B>::size;
+  } else {
+    return true;
+  }
+}
+
+// The diagnostics of a misspelt name: the function's template arguments spell the name and
+// the names the block has, which both compilers print beside the message.
+template <class Name, class Inputs>
+constexpr void no_VAR_INPUT_or_VAR_IN_OUT_named() {
+  static_assert(dependent_false<Name>,
+                "iecoop: the block has no VAR_INPUT or VAR_IN_OUT of the name spelled in `Name`; `Inputs` "
+                "spells those it has: check the spelling, and that the block lists the variable in "
+                "`using VAR_INPUT = pins<...>` (or VAR_IN_OUT)");
+}
+template <class Name, class Outputs>
+constexpr void no_VAR_OUTPUT_named() {
+  static_assert(dependent_false<Name>,
+                "iecoop: the block has no VAR_OUTPUT of the name spelled in `Name` (only outputs are read with =>); "
+                "`Outputs` spells those it has: check the spelling, and that the block lists the variable in "
+                "`using VAR_OUTPUT = pins<...>`");
+}
+template <class B>
+constexpr bool is_program() noexcept {
+  return requires { typename B::iecoop_program; };
+}
+
+/// The argument A, if it names an input of B, has a type that input accepts.
+template <class B, class A>
+constexpr bool argument_type_ok() noexcept {
+  if constexpr (NamedInput<A> && known_name<B, A>()) {
+    using arg = std::remove_cvref_t<A>;
+    constexpr std::size_t input = inputs_of<B>::index_of(arg::name);
+    if constexpr (input < inputs_of<B>::size) {
+      using target = std::remove_cvref_t<decltype(std::declval<B&>().*pin<inputs_of<B>, input>)>;
+      return argument_accepted<target, decltype(std::declval<A>().value)>();
+    } else {
+      return true;  // an in-out binds to a variable: checked where it binds
+    }
+  } else {
+    return true;
+  }
+}
 template <class B, class... A>
-void call_block(B& block, A&&... arguments) {
-  static_assert(has_body<B>,
-                "iecoop: a function block needs its code as `void body()` (public, or private with "
-                "`friend struct iecoop::block_access;`)");
+struct first_mistyped_argument {
+  using type = void;
+};
+template <class B, class A0, class... A>
+struct first_mistyped_argument<B, A0, A...> {
+  using type = std::conditional_t<argument_type_ok<B, A0>(), typename first_mistyped_argument<B, A...>::type, A0>;
+};
+
+/// The first argument of A... whose name the block B does not have, or void.
+template <class B, class... A>
+struct first_unknown_argument {
+  using type = void;
+};
+template <class B, class A0, class... A>
+struct first_unknown_argument<B, A0, A...> {
+  using type = std::conditional_t<known_name<B, A0>(), typename first_unknown_argument<B, A...>::type, A0>;
+};
+
+/// Everything a call's arguments and the block must satisfy, checked before anything else is
+/// instantiated, so that a mistake is one error.
+template <class B, class... A>
+constexpr bool call_is_valid() {
+  return has_body<B> && (known_name<B, A>() && ...) && distinct_names<A...>() && (argument_type_ok<B, A>() && ...);
+}
+/// What is wrong with a call for which call_is_valid() is false, as one error.
+template <class B, class... A>
+constexpr void report_invalid_call() {
+  if constexpr (!has_body<B>) {
+    if constexpr (is_program<B>()) {
+      static_assert(has_body<B>,
+                    "iecoop: a PROGRAM needs its code as `void body()` (public, or private with "
+                    "`friend struct iecoop::block_access;`); write `void body() {}` for an empty implementation");
+    } else if constexpr (!std::is_void_v<typename base_of<B>::type>) {
+      static_assert(has_body<B>,
+                    "iecoop: a block that EXTENDS another states its own body, as CODESYS does not run the base's "
+                    "implementation for it: write `void body() override { SUPER::body(); }` to run the base's "
+                    "(ST: SUPER^();), or `void body() override {}` for an empty implementation");
+    } else {
+      static_assert(has_body<B>,
+                    "iecoop: a FUNCTION_BLOCK needs its code as `void body()` (public, or private with "
+                    "`friend struct iecoop::block_access;`); write `void body() {}` for an empty implementation");
+    }
+  } else if constexpr (!std::is_void_v<typename first_unknown_argument<B, A...>::type>) {
+    using unknown = std::remove_cvref_t<typename first_unknown_argument<B, A...>::type>;
+    if constexpr (NamedInput<unknown>) {
+      no_VAR_INPUT_or_VAR_IN_OUT_named<spelled_t<unknown::spelling>, spelled_inputs_t<B>>();
+    } else {
+      no_VAR_OUTPUT_named<spelled_t<unknown::spelling>, spelled_outputs_t<B>>();
+    }
+  } else if constexpr (!distinct_names<A...>()) {
+    static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice; name each variable once");
+  } else {
+    using mistyped = std::remove_cvref_t<typename first_mistyped_argument<B, A...>::type>;
+    using target = std::remove_cvref_t<decltype(std::declval<B&>().*pin<inputs_of<B>, inputs_of<B>::index_of(mistyped::name)>)>;
+    using from = nominal_t<passed_t<decltype(std::declval<mistyped>().value)>>;
+    using to = unwrapped_t<target&>;
+    if constexpr (!iec_name<from>::value.empty() && !iec_name<to>::value.empty()) {
+      no_implicit_conversion<spelled_iec_name_t<from>, spelled_iec_name_t<to>>();
+    } else {
+      report_argument_type<target, decltype(std::declval<mistyped>().value)>();
+    }
+  }
+}
+
+template <class B, class... A>
+void call_valid_block(B& block, A&&... arguments) {
   check_interface<B>();
-  static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice");
   (
       [&] {
         if constexpr (NamedInput<A>) apply_input(block, std::forward<A>(arguments));
@@ -148,10 +264,26 @@ void call_block(B& block, A&&... arguments) {
       ...);
 }
 
+/// One call of a block: inputs, body, outputs (ST: inst(IN := x, Q => y)).
+template <class B, class... A>
+void call_block(B& block, A&&... arguments) {
+  if constexpr (!call_is_valid<B, A...>()) {
+    report_invalid_call<B, A...>();
+  } else {
+    call_valid_block(block, std::forward<A>(arguments)...);
+  }
+}
+
 template <class B, class... A>
 constexpr B& assign_inputs(B& block, A&&... arguments) {
-  static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice");
-  (apply_input(block, std::forward<A>(arguments)), ...);
+  if constexpr (((known_name<B, A>() && ...) && distinct_names<A...>())) {
+    (apply_input(block, std::forward<A>(arguments)), ...);
+  } else if constexpr (!std::is_void_v<typename first_unknown_argument<B, A...>::type>) {
+    using unknown = std::remove_cvref_t<typename first_unknown_argument<B, A...>::type>;
+    no_VAR_INPUT_or_VAR_IN_OUT_named<spelled_t<unknown::spelling>, spelled_inputs_t<B>>();
+  } else {
+    static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice; name each variable once");
+  }
   return block;
 }
 
@@ -160,7 +292,13 @@ template <class Self>
 class block_calls {
  public:
   /// ST: `inst();` — runs the body with the inputs as they are.
-  void operator()() { call_block(self()); }
+  void operator()() {
+    if constexpr (call_is_valid<Self>()) {
+      call_valid_block(self());
+    } else {
+      report_invalid_call<Self>();
+    }
+  }
 
   /// ST: `inst(IN := x, PT := t, Q => q);` — assigns the named inputs (and binds the named
   /// in-outs), runs the body, then copies the named outputs out. Inputs not named keep
@@ -168,7 +306,11 @@ class block_calls {
   template <NamedArgument... A>
     requires(sizeof...(A) > 0)
   void operator()(A&&... arguments) {
-    call_block(self(), std::forward<A>(arguments)...);
+    if constexpr (call_is_valid<Self, A...>()) {
+      call_valid_block(self(), std::forward<A>(arguments)...);
+    } else {
+      report_invalid_call<Self, A...>();
+    }
   }
 
   /// Assigns named inputs without running the body, and returns the block, so that an

@@ -36,7 +36,7 @@ consteval void check_literal() noexcept {
   static_assert(E != parse_error::missing_unit, "iecoop: a number in a duration literal has no unit; add d, h, m, s, ms, us or ns");
   static_assert(E != parse_error::unknown_unit, "iecoop: unknown unit in a duration literal; the units are d, h, m, s, ms, us, ns");
   static_assert(E != parse_error::unit_order, "iecoop: units of a duration literal must appear once each from highest to lowest (d h m s ms us ns); write \"T#4d13ms\", not \"T#13ms4d\"");
-  static_assert(E != parse_error::unit_overflow, "iecoop: only the highest unit of a duration literal may overflow; write \"T#6m8s\" (or \"T#368s\") instead of \"T#5m68s\"");
+  static_assert(E != parse_error::unit_overflow, "iecoop: only the highest unit of a duration literal may overflow");
   static_assert(E != parse_error::fraction_not_last, "iecoop: only the last unit of a duration literal may have a fraction; write \"T#1s500ms\" or \"T#1.5s\"");
   static_assert(E != parse_error::too_precise, "iecoop: the literal is finer than its type resolves (TIME: 1 ms); use LTIME# for microseconds and nanoseconds");
   static_assert(E != parse_error::out_of_range, "iecoop: the literal's value does not fit its type (TIME: up to T#49d17h2m47s295ms); use a wider type such as LTIME or LINT");
@@ -120,6 +120,29 @@ consteval parse_result<T> parse_literal() noexcept {
   }
 }
 
+/// The literal `Given` breaks "only the highest unit may overflow"; `Write` spells the same
+/// duration written as IEC allows (the template arguments show both).
+template <class Given, class Write>
+consteval void duration_unit_overflow() noexcept {
+  static_assert(dependent_false<Given>,
+                "iecoop: only the highest unit of a duration literal may overflow; write the literal `Write` spells "
+                "(the same duration) instead of the one `Given` spells");
+}
+
+/// The valid spelling of a TIME or LTIME literal in which a lower unit overflows ("T#2m75s"
+/// is "T#3m15s"), for the diagnostic.
+template <class T, fixed_string S>
+consteval auto normalized_duration_literal() noexcept {
+  const literal_chars<S> copy;
+  const auto ns = parse_duration_ns(copy.view(), std::is_same_v<T, LTIME>, std::is_same_v<T, TIME> ? 1'000'000 : 1, true);
+  const std::uint64_t ticks = ns.value_or(0) / (std::is_same_v<T, TIME> ? 1'000'000 : 1);
+  constant_text<64> text;
+  char buffer[64]{};
+  const char* end = to_text(buffer, T::from_ticks(static_cast<typename T::rep>(ticks)));
+  for (const char* p = buffer; p != end; ++p) text.chars[text.size++] = *p;
+  return text;
+}
+
 }  // namespace detail
 
 inline namespace literals {
@@ -149,7 +172,11 @@ constexpr auto operator""_iec() noexcept {
   } else {
     using T = typename detail::literal_cxx_type<type>::type;
     constexpr parse_result<T> result = detail::parse_literal<T, S>();
-    detail::check_literal<result.error()>();
+    if constexpr (result.error() == parse_error::unit_overflow) {
+      detail::duration_unit_overflow<detail::spelled_t<S>, detail::spelled_t<detail::normalized_duration_literal<T, S>()>>();
+    } else {
+      detail::check_literal<result.error()>();
+    }
     return result.value_or(T{});
   }
 }

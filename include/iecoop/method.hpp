@@ -45,6 +45,10 @@ class args;
 
 namespace detail {
 
+/// The names a diagnostic lists: `names_of_variables<spelled<'a'>, spelled<'b'>>`.
+template <class... Spelled>
+struct names_of_variables {};
+
 template <class T>
 struct is_args : std::false_type {};
 template <class V>
@@ -57,6 +61,58 @@ constexpr std::size_t find_first_output() noexcept {
     ((found == sizeof...(I) && is_output<field_type<Vars, I>>::value ? (found = I, 0) : 0), ...);
     return found;
   }(std::make_index_sequence<field_count<Vars>>{});
+}
+
+template <class Vars, std::size_t I, std::size_t... C>
+auto spell_field(std::index_sequence<C...>) -> spelled<field_name<Vars, I>[C]...>;
+template <class Vars, std::size_t I>
+using spelled_field_t = decltype(spell_field<Vars, I>(std::make_index_sequence<field_name<Vars, I>.size()>{}));
+template <class Vars, std::size_t... I>
+auto spell_fields(std::index_sequence<I...>) -> names_of_variables<spelled_field_t<Vars, I>...>;
+/// The names of a METHOD's or FUNCTION's variables, spelled (for diagnostics).
+template <class Vars>
+using spelled_fields_t = decltype(spell_fields<Vars>(std::make_index_sequence<field_count<Vars>>{}));
+
+/// The argument A names a variable of Vars (positional arguments name none).
+template <class Vars, class A>
+constexpr bool names_a_variable() noexcept {
+  if constexpr (NamedArgument<A>) {
+    return field_index<Vars>(std::remove_cvref_t<A>::name) < field_count<Vars>;
+  } else {
+    return true;
+  }
+}
+
+template <class Name, class Variables>
+constexpr void no_variable_named() {
+  static_assert(dependent_false<Name>,
+                "iecoop: the METHOD or FUNCTION has no variable of the name spelled in `Name`; `Variables` spells "
+                "those it has: check the spelling");
+}
+
+/// What a call's argument list must satisfy before any argument is stored, so that a mistake
+/// is reported once.
+template <class Vars, class... A>
+constexpr bool arguments_valid() noexcept {
+  constexpr std::size_t positional = (std::size_t{0} + ... + (NamedArgument<A> ? 0 : 1));
+  return positional_first<A...>() && distinct_names<A...>() && positional <= field_count<Vars> &&
+         (names_a_variable<Vars, A>() && ...);
+}
+template <class Vars, class... A>
+constexpr void report_invalid_arguments() {
+  constexpr std::size_t positional = (std::size_t{0} + ... + (NamedArgument<A> ? 0 : 1));
+  static_assert(positional_first<A...>(),
+                "iecoop: positional arguments come before named ones; name all arguments after the first named one");
+  static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice; name each variable once");
+  static_assert(positional <= field_count<Vars>,
+                "iecoop: more arguments than the METHOD or FUNCTION has variables; remove the extra ones");
+  (
+      [] {
+        if constexpr (!names_a_variable<Vars, A>()) {
+          no_variable_named<spelled_t<std::remove_cvref_t<A>::spelling>, spelled_fields_t<Vars>>();
+        }
+      }(),
+      ...);
 }
 
 }  // namespace detail
@@ -91,12 +147,13 @@ class args : public Vars {
   template <class... A>
     requires(sizeof...(A) > 0 && !(sizeof...(A) == 1 && (std::is_base_of_v<Vars, std::remove_cvref_t<A>> && ...)))
   constexpr args(A&&... arguments) : Vars() {  // NOLINT: a call's argument list
-    static_assert(detail::positional_first<A...>(),
-                  "iecoop: positional arguments come before named ones; name all arguments after the first named one");
-    static_assert(detail::distinct_names<A...>(), "iecoop: a call names the same variable twice");
-    [&]<std::size_t... K>(std::index_sequence<K...>) {
-      (apply<K>(std::forward<A>(arguments)), ...);
-    }(std::index_sequence_for<A...>{});
+    if constexpr (!detail::arguments_valid<Vars, A...>()) {
+      detail::report_invalid_arguments<Vars, A...>();
+    } else {
+      [&]<std::size_t... K>(std::index_sequence<K...>) {
+        (apply<K>(std::forward<A>(arguments)), ...);
+      }(std::index_sequence_for<A...>{});
+    }
   }
 
   /// The value of the first VAR_OUTPUT: `return in.first_output();` in a method declared

@@ -53,6 +53,7 @@ struct param_name {
 template <detail::fixed_string Name, class V>
 struct named_input {
   static constexpr std::string_view name{Name.chars, Name.size};
+  static constexpr auto spelling = Name;  ///< the name as a template argument (diagnostics)
   V value;
 };
 
@@ -60,6 +61,7 @@ struct named_input {
 template <detail::fixed_string Name, class T>
 struct named_output {
   static constexpr std::string_view name{Name.chars, Name.size};
+  static constexpr auto spelling = Name;  ///< the name as a template argument (diagnostics)
   using target_type = T;
   T* target;
 };
@@ -137,6 +139,44 @@ concept checked_integer_argument = cpp_integer<std::remove_cvref_t<V>> && (AnyIn
 
 }  // namespace detail
 
+namespace detail {
+
+/// An argument of type V is accepted for a parameter of type Target, as ST's implicit
+/// conversions allow (a wrapper passes its value; a C++ integer is checked at run time).
+template <class Target, class V>
+constexpr bool argument_accepted() noexcept {
+  if constexpr (value_wrapper<V> && !value_wrapper<Target>) {
+    return argument_accepted<Target, decltype(value_of(std::declval<V>()))>();
+  } else if constexpr (checked_integer_argument<Target, V>) {
+    return true;
+  } else if constexpr (value_wrapper<Target>) {
+    return std::is_assignable_v<Target&, V>;
+  } else {
+    return std::is_convertible_v<V, Target>;
+  }
+}
+
+/// The value type an argument of type V passes (a wrapper's value, else V itself).
+template <class V>
+using passed_t = std::remove_cvref_t<decltype(value_of(std::declval<V>()))>;
+
+/// Why an argument of type V is not accepted for a Target: the conversion to write, when both
+/// are IEC types; otherwise the rule.
+template <class Target, class V>
+constexpr void report_argument_type() {
+  using from = nominal_t<passed_t<V>>;
+  using to = std::remove_cvref_t<decltype(value_of(std::declval<Target&>()))>;
+  if constexpr (!iec_name<from>::value.empty() && !iec_name<to>::value.empty()) {
+    no_implicit_conversion<spelled_iec_name_t<from>, spelled_iec_name_t<to>>();
+  } else {
+    static_assert(dependent_false<V>,
+                  "iecoop: the argument's type does not convert to the parameter's type; convert it explicitly "
+                  "(e.g. DINT_TO_INT(x)) or pass a value of the parameter's type");
+  }
+}
+
+}  // namespace detail
+
 /**
  * Stores an argument of a call in the variable `target`, following the rules of assignment:
  * IEC values convert as ST allows implicitly (a DINT does not go into an INT), and a C++
@@ -160,9 +200,9 @@ constexpr void assign_argument(Target& target, V&& value) {
     } else {
       detail::copy_value(target, Target(static_cast<rep>(value)));
     }
+  } else if constexpr (!detail::argument_accepted<Target, V&&>()) {
+    detail::report_argument_type<Target, V&&>();
   } else {
-    static_assert(std::is_assignable_v<Target&, V&&>,
-                  "iecoop: the argument's type does not convert to the parameter's type; convert it explicitly (e.g. DINT_TO_INT)");
     detail::assign_value(target, std::forward<V>(value));
   }
 }

@@ -19,8 +19,10 @@
 #include <cstddef>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/reflect.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -130,6 +132,26 @@ constexpr bool unique_names() noexcept {
   }
   return true;
 }
+
+}  // namespace detail
+
+namespace detail {
+
+template <auto Member, std::size_t... I>
+auto spell_member(std::index_sequence<I...>) -> spelled<member_name<Member>[I]...>;
+/// The name of a pin as a spelled<> type, for diagnostics.
+template <auto Member>
+using spelled_member_t = decltype(spell_member<Member>(std::make_index_sequence<member_name<Member>.size()>{}));
+
+/// The names a diagnostic lists: `names_are<spelled<'I', 'N'>, spelled<'P', 'T'>>`.
+template <class... Spelled>
+struct names_are {};
+template <class Pins>
+struct spelled_pins;
+template <auto... Members>
+struct spelled_pins<pins<Members...>> {
+  using type = names_are<spelled_member_t<Members>...>;
+};
 
 }  // namespace detail
 

@@ -467,6 +467,12 @@ class located {
     const T value = detail::value_of(other);
     return *this = value;
   }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires detail::rejected_value<T, V>
+  constexpr void operator=(const V&) {
+    detail::reject_value<T, V>();
+  }
 };
 
 /**

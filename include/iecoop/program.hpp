@@ -32,7 +32,11 @@ namespace iecoop {
  * scratch instance.
  */
 template <class Self>
-class program : public function_block<Self>, public detail::single_instance<Self, fault_kind::duplicate_program> {};
+class program : public function_block<Self>, public detail::single_instance<Self, fault_kind::duplicate_program> {
+ public:
+  /// Marks a PROGRAM (for diagnostics that say "PROGRAM", not "FUNCTION_BLOCK").
+  using iecoop_program = void;
+};
 
 }  // namespace iecoop
 

@@ -214,6 +214,21 @@ class property {
     write(other.read());
     return *this;
   }
+  /// From a variable wrapper (or property) of another type whose value converts implicitly
+  /// (`fb.dProp = iVar;` with a var<INT> into a DINT property).
+  template <class V>
+    requires(!owner_set && detail::converts_through_wrapper<T, V>)
+  property& operator=(const V& other) {
+    const T value = detail::value_of(other);
+    write(value);
+    return *this;
+  }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires(!owner_set && detail::rejected_value<T, V>)
+  void operator=(const V&) {
+    detail::reject_value<T, V>();
+  }
 
   /// What reading the property gives (its Get accessor).
   [[nodiscard]] T get()

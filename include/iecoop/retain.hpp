@@ -222,6 +222,12 @@ class retained_variable {
     detail::assign_value(value_, detail::value_of(other));
     return self();
   }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires detail::rejected_value<T, V>
+  constexpr void operator=(const V&) {
+    detail::reject_value<T, V>();
+  }
 
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }

@@ -207,8 +207,10 @@ constexpr std::size_t find_unit(std::string_view name) noexcept {
 
 /// Parses the part after the prefix ("1h2m3.5s") into nanoseconds; every component must be
 /// a whole multiple of `resolution_ns`.
+/// With `lenient`, every unit may overflow (to compute what a literal that breaks that rule
+/// means, for the diagnostic that proposes its valid spelling).
 constexpr parse_result<std::uint64_t> parse_duration_body(std::string_view s, std::size_t offset,
-                                                          std::uint64_t resolution_ns) noexcept {
+                                                          std::uint64_t resolution_ns, bool lenient = false) noexcept {
   if (s.empty()) return {parse_error::no_value, offset};
   if (s[0] == '-') return {parse_error::negative, offset};
   std::uint64_t total = 0;
@@ -236,7 +238,7 @@ constexpr parse_result<std::uint64_t> parse_duration_body(std::string_view s, st
     if (previous_unit != no_unit && unit <= previous_unit) return {parse_error::unit_order, offset + unit_at};
     if (whole.overflow) return {parse_error::out_of_range, offset + number_at};
     const duration_unit& u = duration_units[unit];
-    if (previous_unit != no_unit && whole.value >= u.limit) return {parse_error::unit_overflow, offset + number_at};
+    if (!lenient && previous_unit != no_unit && whole.value >= u.limit) return {parse_error::unit_overflow, offset + number_at};
     if (!mul_add(whole.value, u.ns, total, total)) return {parse_error::out_of_range, offset + number_at};
     if (has_fraction) {
       // Each fraction digit adds digit * ns / 10^k, which must be a whole number of ns.
@@ -276,7 +278,7 @@ constexpr duration_prefix classify_duration_prefix(std::string_view prefix) noex
 }
 
 constexpr parse_result<std::uint64_t> parse_duration_ns(std::string_view text, bool accept_ltime,
-                                                        std::uint64_t resolution_ns) noexcept {
+                                                        std::uint64_t resolution_ns, bool lenient = false) noexcept {
   if (text.empty()) return {parse_error::empty, 0};
   const prefixed p = split_prefix(text);
   if (p.prefix.empty()) return {parse_error::missing_prefix, 0};
@@ -287,7 +289,7 @@ constexpr parse_result<std::uint64_t> parse_duration_ns(std::string_view text, b
       break;
     case duration_prefix::time: break;
   }
-  return parse_duration_body(p.body, p.body_offset, resolution_ns);
+  return parse_duration_body(p.body, p.body_offset, resolution_ns, lenient);
 }
 
 }  // namespace detail

@@ -22,6 +22,7 @@
 #include <concepts>
 #include <cstdint>
 #include <limits>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -65,6 +66,28 @@ template <class T>
 struct is_real : std::false_type {};
 template <class Rep>
 struct is_real<real<Rep>> : std::true_type {};
+
+/// The IEC name of an elementary type ("DINT"), or empty; each type's header names its types.
+template <class T>
+struct iec_name {
+  static constexpr std::string_view value{};
+};
+
+template <class T, std::size_t... I>
+auto spell_iec_name(std::index_sequence<I...>) -> spelled<iec_name<T>::value[I]...>;
+/// The IEC name of T as a spelled<> type, for diagnostics.
+template <class T>
+using spelled_iec_name_t = decltype(spell_iec_name<T>(std::make_index_sequence<iec_name<T>::value.size()>{}));
+
+/// `From` goes into `To` only through an explicit conversion: the template arguments spell
+/// both IEC names, which is the name of the conversion to write.
+template <class From, class To>
+constexpr void no_implicit_conversion() {
+  static_assert(dependent_false<From>,
+                "iecoop: ST converts the type spelled in `From` into the one spelled in `To` only explicitly "
+                "(a narrowing, signed and unsigned, bit string and integer, REAL and integer, BOOL and number); "
+                "write the conversion From_TO_To(x) (e.g. DINT_TO_INT(x)) or TO_To(x)");
+}
 
 template <class T>
 inline constexpr bool is_char_v = std::is_same_v<T, char> || std::is_same_v<T, wchar_t> ||
@@ -267,6 +290,11 @@ struct detail::is_scalar_wrapper<BOOL> : std::true_type {};
 template <>
 struct detail::is_iec_value<BOOL> : std::true_type {};
 
+template <>
+struct detail::iec_name<BOOL> {
+  static constexpr std::string_view value = "BOOL";
+};
+
 inline constexpr BOOL TRUE{true};
 inline constexpr BOOL FALSE{false};
 
@@ -328,6 +356,10 @@ template <class A, class B>
 using common_integer_t =
     std::conditional_t<widens_implicitly<A, B>, B, std::conditional_t<widens_implicitly<B, A>, A, void>>;
 
+/// An integer type U that an intermediate result of type T converts to only explicitly.
+template <class T, class U>
+concept narrower_result = is_integer<U>::value && !widens_implicitly<T, U>;
+
 /// The register an intermediate result of IEC type T is held in: register_bits, or wider for
 /// a wider T; signed for the signed integers, unsigned for the others.
 template <class T>
@@ -371,12 +403,19 @@ struct register_math {
 /// Integer division or MOD by zero: a fault, and the result 0.
 inline void integer_division_by_zero() { fault(fault_kind::division_by_zero, "integer division or MOD by zero; the result is 0"); }
 
+/// The diagnostic of an operation between integer types without a common type; the template
+/// arguments spell both IEC names.
+template <class Left, class Right>
+constexpr void no_common_type_of() {
+  static_assert(dependent_false<Left, Right>,
+                "iecoop: these IEC integer types (spelled in `Left` and `Right`) have no implicit common type "
+                "(signed and unsigned, or bit string and integer); convert one operand explicitly first, e.g. "
+                "UINT_TO_DINT(u) or WORD_TO_INT(w)");
+}
 template <class A, class B>
-constexpr bool no_common_type() {
-  static_assert(dependent_false<A, B>,
-                "iecoop: these IEC integer types have no implicit common type (signed and unsigned, or bit string and "
-                "integer); convert one operand explicitly first, e.g. UINT_TO_DINT(u) or static_cast<INT>(w)");
-  return false;
+constexpr nominal_t<A> no_common_type() {
+  no_common_type_of<spelled_iec_name_t<nominal_t<A>>, spelled_iec_name_t<nominal_t<B>>>();
+  return nominal_t<A>();
 }
 
 /// Two IEC integer values of which at least one is an intermediate result, other than two
@@ -387,6 +426,11 @@ concept mixed_int_operands =
     int_value<A> && int_value<B> && (is_intermediate<A>::value || is_intermediate<B>::value) &&
     !(is_intermediate<A>::value && is_intermediate<B>::value && std::is_same_v<A, B>) &&
     !std::is_void_v<common_integer_t<nominal_t<A>, nominal_t<B>>>;
+
+/// An IEC value of type V (or an intermediate result of type V) that does not convert
+/// implicitly into T: what an assignment rejects with no_implicit_conversion.
+template <class V, class T>
+concept rejected_conversion = is_iec_value<V>::value && !std::is_convertible_v<const V&, T> && !std::is_same_v<V, T>;
 
 /// Two IEC integer values whose types have no implicit common type: IEC needs an explicit
 /// conversion before they meet.
@@ -446,6 +490,15 @@ class integer {
     requires(!std::is_same_v<integer<R, K>, integer>)
   constexpr explicit(!detail::implicit_widening<R, K, Rep, Kind>) integer(integer<R, K> other) noexcept
       : value_(static_cast<Rep>(other.value())) {}
+
+  /// Assigning a value of a type that does not convert implicitly (`iAmount = dintVar;`,
+  /// `i = d + 1;`) does not compile, and says which conversion to write instead of "no match
+  /// for operator=". (std::is_convertible stays truthful: only assignment is caught.)
+  template <class V>
+    requires detail::rejected_conversion<V, integer>
+  constexpr void operator=(const V&) noexcept {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>, detail::spelled_iec_name_t<integer>>();
+  }
 
   /// The value as its C++ integer type.
   [[nodiscard]] constexpr Rep value() const noexcept { return value_; }
@@ -585,6 +638,7 @@ struct detail::is_scalar_wrapper<integer<Rep, Kind>> : std::true_type {};
 template <class Rep, integer_kind Kind>
 struct detail::is_iec_value<integer<Rep, Kind>> : std::true_type {};
 
+
 using SINT = integer<std::int8_t, integer_kind::signed_int>;
 using INT = integer<std::int16_t, integer_kind::signed_int>;
 using DINT = integer<std::int32_t, integer_kind::signed_int>;
@@ -597,6 +651,19 @@ using BYTE = integer<std::uint8_t, integer_kind::bit_string>;
 using WORD = integer<std::uint16_t, integer_kind::bit_string>;
 using DWORD = integer<std::uint32_t, integer_kind::bit_string>;
 using LWORD = integer<std::uint64_t, integer_kind::bit_string>;
+
+template <> struct detail::iec_name<SINT> { static constexpr std::string_view value = "SINT"; };
+template <> struct detail::iec_name<INT> { static constexpr std::string_view value = "INT"; };
+template <> struct detail::iec_name<DINT> { static constexpr std::string_view value = "DINT"; };
+template <> struct detail::iec_name<LINT> { static constexpr std::string_view value = "LINT"; };
+template <> struct detail::iec_name<USINT> { static constexpr std::string_view value = "USINT"; };
+template <> struct detail::iec_name<UINT> { static constexpr std::string_view value = "UINT"; };
+template <> struct detail::iec_name<UDINT> { static constexpr std::string_view value = "UDINT"; };
+template <> struct detail::iec_name<ULINT> { static constexpr std::string_view value = "ULINT"; };
+template <> struct detail::iec_name<BYTE> { static constexpr std::string_view value = "BYTE"; };
+template <> struct detail::iec_name<WORD> { static constexpr std::string_view value = "WORD"; };
+template <> struct detail::iec_name<DWORD> { static constexpr std::string_view value = "DWORD"; };
+template <> struct detail::iec_name<LWORD> { static constexpr std::string_view value = "LWORD"; };
 
 // ---------------------------------------------------------------------------------------
 // Intermediate results
@@ -655,7 +722,7 @@ class intermediate {
   }
   /// To another integer type: explicit (keeps the low bits, like DINT_TO_INT).
   template <class U>
-    requires(detail::is_integer<U>::value && !detail::widens_implicitly<T, U>)
+    requires detail::narrower_result<T, U>
   explicit constexpr operator U() const noexcept {
     return U(static_cast<typename U::rep>(value_));
   }
@@ -865,37 +932,38 @@ constexpr std::strong_ordering operator<=>(const A& a, const B& b) noexcept {
 }
 
 // Arithmetic, bitwise operations and comparisons between unrelated integer types: rejected
-// with a message instead of an unhelpful "no match for operator".
+// with a message instead of an unhelpful "no match for operator". Each returns a value of a
+// plausible type, so that the message is the only error.
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator+(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator+(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator-(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator-(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator*(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator*(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator/(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator/(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator%(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator%(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator&(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator&(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator|(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator|(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-void operator^(const A&, const B&) { detail::no_common_type<A, B>(); }
+detail::nominal_t<A> operator^(const A&, const B&) { return detail::no_common_type<A, B>(); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator==(const A&, const B&) { return detail::no_common_type<A, B>(); }
+BOOL operator==(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator!=(const A&, const B&) { return detail::no_common_type<A, B>(); }
+BOOL operator!=(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator<(const A&, const B&) { return detail::no_common_type<A, B>(); }
+BOOL operator<(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator<=(const A&, const B&) { return detail::no_common_type<A, B>(); }
+BOOL operator<=(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator>(const A&, const B&) { return detail::no_common_type<A, B>(); }
+BOOL operator>(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-bool operator>=(const A&, const B&) { return detail::no_common_type<A, B>(); }
+BOOL operator>=(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
 template <class A, class B> requires detail::unrelated_integers<A, B>
-std::strong_ordering operator<=>(const A&, const B&) { return detail::no_common_type<A, B>() ? std::strong_ordering::equal : std::strong_ordering::less; }
+std::strong_ordering operator<=>(const A&, const B&) { return detail::no_common_type<A, B>().value() <=> 0; }
 
 // ---------------------------------------------------------------------------------------
 // REAL and LREAL
@@ -1038,6 +1106,8 @@ struct detail::is_iec_value<real<Rep>> : std::true_type {};
 
 using REAL = real<float>;
 using LREAL = real<double>;
+template <> struct detail::iec_name<REAL> { static constexpr std::string_view value = "REAL"; };
+template <> struct detail::iec_name<LREAL> { static constexpr std::string_view value = "LREAL"; };
 
 // ---------------------------------------------------------------------------------------
 // The IEC generic types (ANY_INT, ANY_BIT, ...) as concepts.

@@ -174,6 +174,12 @@ class local : public detail::variable_value<T> {
     this->assign_converted(other);
     return *this;
   }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires detail::rejected_value<T, V>
+  constexpr void operator=(const V&) {
+    detail::reject_value<T, V>();
+  }
 
   /// The variable itself, for members of a structured local (`pos.ref().x = 1;`) and to bind
   /// a VAR_IN_OUT to it.
@@ -313,6 +319,12 @@ class in_out {
     detail::assign_value(get(), detail::value_of(other));
     return *this;
   }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires detail::rejected_value<value_type, V>
+  constexpr void operator=(const V&) const {
+    detail::reject_value<value_type, V>();
+  }
   /// ST's `a := b`: copies b's value into a's variable. While an online change copies the
   /// block that holds it, nothing happens: the new instance keeps its own binding.
   constexpr in_out& operator=(const in_out& other) {
@@ -379,6 +391,12 @@ class output {
   constexpr output& operator=(const V& other) {
     detail::assign_value(value_, detail::value_of(other));
     return *this;
+  }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires detail::rejected_value<T, V>
+  constexpr void operator=(const V&) {
+    detail::reject_value<T, V>();
   }
   constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }

@@ -1,4 +1,7 @@
-// EXPECT: does not convert to the parameter's type
+// EXPECT: only explicitly
+// EXPECT: spelled<'D', 'I', 'N', 'T'>
+// EXPECT: spelled<'I', 'N', 'T'>
+// EXPECT-ERRORS: 1
 // Arguments follow IEC's implicit conversions: a DINT does not go into an INT input.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

@@ -1,4 +1,5 @@
-// EXPECT: a function block needs its code as
+// EXPECT: a FUNCTION_BLOCK needs its code as `void body\(\)`
+// EXPECT-ERRORS: 1
 // A block's code is its body() (ST: the implementation part).
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

@@ -1,4 +1,4 @@
-// EXPECT: iecoop: the block has no VAR_INPUT or VAR_IN_OUT of this name
+// EXPECT: no VAR_INPUT or VAR_IN_OUT of the name spelled in
 // The default (CODESYS) CTU calls its reset input RESET; IEC's name R belongs to iec::CTU.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

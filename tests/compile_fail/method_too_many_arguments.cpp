@@ -1,4 +1,5 @@
-// EXPECT: more arguments than the method or function has variables
+// EXPECT: more arguments than the METHOD or FUNCTION has variables
+// EXPECT-ERRORS: 1
 // A positional call cannot pass more arguments than the method declares.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

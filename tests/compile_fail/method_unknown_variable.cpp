@@ -1,4 +1,6 @@
-// EXPECT: has no variable of this name
+// EXPECT: has no variable of the name spelled in
+// EXPECT-ERRORS: 1
+// EXPECT: spelled<'c'>
 // A named argument of a method must name one of its variables.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

@@ -1,4 +1,6 @@
-// EXPECT: these IEC integer types have no implicit common type
+// EXPECT: have no implicit common type
+// EXPECT: spelled<'U', 'I', 'N', 'T'>
+// EXPECT-ERRORS: 1
 // INT and UINT have no common type under IEC's implicit conversions: convert one first.
 #include <iecoop/iecoop.hpp>
 

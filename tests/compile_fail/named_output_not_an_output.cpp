@@ -1,4 +1,5 @@
-// EXPECT: no VAR_OUTPUT of this name
+// EXPECT: no VAR_OUTPUT of the name spelled in
+// EXPECT-ERRORS: 1
 // Only outputs can be read with => (IN is an input).
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

@@ -1,4 +1,6 @@
-// EXPECT: no VAR_INPUT or VAR_IN_OUT of this name
+// EXPECT: no VAR_INPUT or VAR_IN_OUT of the name spelled in
+// EXPECT-ERRORS: 1
+// EXPECT: spelled<'I', 'M'>
 // A named argument must name an input of the block (here a typo: 'IM' for 'IN').
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

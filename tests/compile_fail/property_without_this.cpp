@@ -1,4 +1,4 @@
-// EXPECT: a property is declared `\[\[no_unique_address\]\] property<T, &FB::Name_Get, &FB::Name_Set> Name\{this\};`
+// EXPECT: a property is declared `\[\[no_unique_address\]\] property<T, &FB::Name_Get, &FB::Name_Set> Name\{this\}
 // A property is declared with the initializer {this}, by which it checks, when its block is
 // constructed, that it sits at the block's address.
 #include <iecoop/iecoop.hpp>

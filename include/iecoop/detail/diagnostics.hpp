@@ -3,6 +3,9 @@
 // IWYU pragma: private, include <iecoop/iecoop.hpp>
 #pragma once
 
+#include <cstddef>
+#include <utility>
+
 #include <iecoop/fault.hpp>
 
 namespace iecoop::detail {
@@ -19,5 +22,27 @@ inline void compile_error(const char* message) { fault(fault_kind::invalid_value
 /// false, but only once T is known: for static_assert in templates that must not be used.
 template <class...>
 inline constexpr bool dependent_false = false;
+
+/// A name or a literal spelled out as a type, `spelled<'I', 'M'>`, so that a diagnostic shows
+/// the user's own text in its template arguments on both compilers (Clang 14 prints a string
+/// template argument as a list of numbers, but characters as characters).
+template <char... C>
+struct spelled {};
+
+template <auto Text, std::size_t... I>
+auto spell(std::index_sequence<I...>) -> spelled<Text.chars[I]...>;
+
+/// The characters of `Text` — a constant with `chars` and `size` members, such as a
+/// fixed_string or a constant_text — as a spelled<> type.
+template <auto Text>
+using spelled_t = decltype(spell<Text>(std::make_index_sequence<Text.size>{}));
+
+/// Text computed while compiling, as a structural type (a template argument): what a
+/// diagnostic proposes instead of the user's text.
+template <std::size_t N>
+struct constant_text {
+  char chars[N]{};
+  std::size_t size = 0;
+};
 
 }  // namespace iecoop::detail

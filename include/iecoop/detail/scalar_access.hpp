@@ -51,9 +51,11 @@ constexpr void assign_value(T& target, V&& value) {
     target = std::forward<V>(value);
   } else if constexpr (std::is_same_v<std::remove_cvref_t<V>, T>) {
     copy_value(target, value);
-  } else {
+  } else if constexpr (std::is_convertible_v<V&&, T>) {
     const T converted = std::forward<V>(value);
     copy_value(target, converted);
+  } else {
+    target = std::forward<V>(value);  // T's own assignment, which says why it does not convert
   }
 }
 

@@ -39,8 +39,19 @@ constexpr decltype(auto) value_of(X&& x) {
   }
 }
 
+template <class X, bool = value_wrapper<X>>
+struct unwrapped {
+  using type = std::remove_cvref_t<X>;
+};
 template <class X>
-using unwrapped_t = std::remove_cvref_t<decltype(value_of(std::declval<X>()))>;
+struct unwrapped<X, true> {
+  using type = typename std::remove_cvref_t<X>::value_type;
+};
+/// The value type of an operand: a wrapper's value_type, anything else itself. (Not
+/// decltype(value_of(x)): deducing that return type would instantiate the wrapper's get(),
+/// which a write-only property rejects.)
+template <class X>
+using unwrapped_t = typename unwrapped<X>::type;
 
 template <class X>
 struct is_std_string : std::false_type {};
@@ -86,6 +97,21 @@ concept writable_wrapper = value_wrapper<W> && !requires { typename std::remove_
 template <class T, class V>
 concept converts_through_wrapper =
     value_wrapper<V> && !std::is_same_v<unwrapped_t<V>, T> && std::is_convertible_v<unwrapped_t<V>, T>;
+
+/// An IEC value (or a wrapper of one) that does not convert implicitly into T: assigning it to
+/// a wrapper of T is rejected with the conversion to write.
+template <class T, class V>
+concept rejected_value = rejected_conversion<unwrapped_t<const V&>, T>;
+template <class T, class V>
+constexpr void reject_value() {
+  using from = nominal_t<unwrapped_t<const V&>>;
+  if constexpr (!iec_name<from>::value.empty() && !iec_name<T>::value.empty()) {
+    no_implicit_conversion<spelled_iec_name_t<from>, spelled_iec_name_t<T>>();
+  } else {
+    static_assert(dependent_false<V>,
+                  "iecoop: the value's type does not convert implicitly to the variable's; convert it explicitly");
+  }
+}
 
 /// What `w->m` reaches through a wrapper of T: T's own `->` where it has one (an interface
 /// variable, `ip->M()`), else T's members (`pos->x` for a STRUCT).
