@@ -14,6 +14,10 @@
 // side effect (it counts its calls in iGets) and, in PLC_PRG, bRead, so that the code can stop
 // accessing the property. FB_A has the property twice, once per pragma, so that the tests
 // show the two side by side. A watch list's display of a property is `p.monitor()`.
+//
+// One difference remains: in CODESYS a property without the pragma is not monitored at all
+// (its "Attribute 'monitoring'" page); iecoop has no such mode, and a property declared without
+// a monitoring option is monitored as 'call'. We write `monitoring::call` out where ST has it.
 #include <doctest/doctest.h>
 
 #include <iecoop/iecoop.hpp>
