@@ -17,16 +17,11 @@
 // output<>), and every way out of it is `return in.first_output();` — the line ST leaves
 // implicit. A method with neither return type nor output is `void`.
 //
-// Limit cannot be written so. Its variables have an initial value (iMax := 100), and a struct
-// nested in the block with a default member initializer is not complete until the block is
-// (C++ parses those initializers after the enclosing class). In the method's declaration,
-// inside the block, first_output_t<Limit_vars> therefore sees no fields and does not compile
-// (g++ 12: "static assertion failed: tuple index must be in range" from <tuple>, required from
-// iecoop::detail::field_pointer_of<FB_DoIt::Limit_vars, 0, 0>; clang 14 the same). DoIt's
-// variables have no initial values, so its form works. Limit's return type is left to C++
-// instead, `auto` — what the body returns, in.first_output(), a BOOL (checked below). `auto`
-// cannot be virtual: an overridable method needs its Vars declared outside the block, or the
-// first output's type written out.
+// Limit's variables have an initial value (iMax := 100), and C++ reads the initial values of a
+// struct nested in a block only after the block: in the method's declaration the nested struct
+// would not be complete yet (first_output_t says so, and asks for the struct outside the block).
+// So Limit_vars is declared before FB_DoIt — the one place the port differs in layout from ST,
+// where the method's declaration sits below the block.
 #include <doctest/doctest.h>
 
 #include <iecoop/iecoop.hpp>
@@ -37,6 +32,24 @@
 namespace seed_method_first_output {
 
 using namespace iecoop;
+
+// METHOD PUBLIC Limit (of FB_DoIt)   (no return type: Limit's value is bLimited)
+// VAR_IN_OUT
+//     iValue : INT;
+// END_VAR
+// VAR_INPUT
+//     iMax : INT := 100;
+// END_VAR
+// VAR_OUTPUT
+//     bLimited : BOOL;               (the first declared output)
+//     iExcess : INT;
+// END_VAR
+struct Limit_vars {
+  in_out<INT> iValue;
+  INT iMax = 100;
+  output<BOOL> bLimited;
+  output<INT> iExcess;
+};
 
 // FUNCTION_BLOCK FB_DoIt
 struct FB_DoIt : function_block<FB_DoIt> {
@@ -68,24 +81,8 @@ struct FB_DoIt : function_block<FB_DoIt> {
     return in.first_output();                     // (implicit: DoIt's value is dwSum)
   }
 
-  // METHOD PUBLIC Limit                (no return type: Limit's value is bLimited)
-  // VAR_IN_OUT
-  //     iValue : INT;
-  // END_VAR
-  // VAR_INPUT
-  //     iMax : INT := 100;
-  // END_VAR
-  // VAR_OUTPUT
-  //     bLimited : BOOL;               (the first declared output)
-  //     iExcess : INT;
-  // END_VAR
-  struct Limit_vars {
-    in_out<INT> iValue;
-    INT iMax = 100;
-    output<BOOL> bLimited;
-    output<INT> iExcess;
-  };
-  auto Limit(args<Limit_vars> in) {  // not first_output_t<Limit_vars>: see the top of the file
+  // METHOD PUBLIC Limit                (its variables: Limit_vars, above the block)
+  first_output_t<Limit_vars> Limit(args<Limit_vars> in) {
     if (in.iValue <= in.iMax) {           // IF iValue <= iMax THEN
       return in.first_output();           //     RETURN;           (bLimited: its initial value, FALSE)
     }                                     // END_IF

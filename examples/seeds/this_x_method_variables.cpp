@@ -17,10 +17,9 @@
 // two languages differ: a plain `x` in a method with an input x is the input in ST but the
 // block's x in C++. Write `in.x` for every plain x of the ST.
 //
-// A method's VAR is a C++ local, and a local named like a member shadows it exactly as
-// CODESYS's method variable shadows the block's: plain `x` is the local, `this->x` the block's.
-// Our strict warnings (-Wshadow -Werror) reject that on purpose; ExchangeX turns the warning off
-// around the one declaration, because shadowing is the very thing the seed shows.
+// A method's VAR is declared with its inputs, as temp<T> in the same struct: `in.x` too, so a
+// method's own names are all `in.` + the name and nothing shadows the block's (a C++ local named
+// like a member would, and -Wshadow says so).
 #include <doctest/doctest.h>
 
 #include <iecoop/iecoop.hpp>
@@ -64,17 +63,17 @@ struct FB_X : function_block<FB_X> {
   // VAR_INPUT
   //     iNew : INT;
   // END_VAR
+  // VAR
+  //     x : INT;               (the method's own x, new on every call)
+  // END_VAR
   struct ExchangeX_vars {
     INT iNew;
+    temp<INT> x;
   };
   INT ExchangeX(args<ExchangeX_vars> in) {
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wshadow"  // the method's VAR x shadows the block's x, as in ST
-    INT x;  // VAR x : INT; END_VAR     (a method's variables start afresh on every call)
-#pragma GCC diagnostic pop
-    x = this->x;         // x := THIS^.x;          the local x := the block's x
+    in.x = this->x;      // x := THIS^.x;          the method's x := the block's x
     this->x = in.iNew;   // THIS^.x := iNew;       the block's x := the new value
-    return x;            // ExchangeX := x;        the local: the old value
+    return in.x;         // ExchangeX := x;        the method's x: the old value
   }
 };
 

@@ -121,10 +121,31 @@ constexpr void report_invalid_arguments() {
 template <Reflectable Vars>
 inline constexpr std::size_t first_output_index = detail::find_first_output<Vars>();
 
+namespace detail {
+template <class Vars, bool HasOutput = (first_output_index<Vars> < field_count<Vars>)>
+struct first_output_of {
+  using type = void;  // neither return type nor output: the method returns nothing
+};
+template <class Vars>
+struct first_output_of<Vars, true> {
+  using type = typename field_type<Vars, first_output_index<Vars>>::value_type;
+};
+template <class Vars>
+struct first_output_checked {
+  static_assert(field_count<Vars> > 0 || std::is_empty_v<Vars>,
+                "iecoop: the variables struct is not complete where the method's return type is read: C++ reads the "
+                "initial values of a struct nested in a block only after the block. Declare the variables struct "
+                "before the block (outside it) when the method returns its first output");
+  using type = typename first_output_of<Vars>::type;
+};
+}  // namespace detail
+
 /// The type of the first VAR_OUTPUT in Vars: the return type of a method declared without
-/// one (CODESYS: "the first declared output is used as the return value").
+/// one (CODESYS: "the first declared output is used as the return value"); void if Vars has
+/// no output either (the method returns nothing). Declare Vars outside the block if it has
+/// initial values: C++ completes a nested struct's initial values only after the block.
 template <Reflectable Vars>
-using first_output_t = typename field_type<Vars, first_output_index<Vars>>::value_type;
+using first_output_t = typename detail::first_output_checked<Vars>::type;
 
 /**
  * The variables of one call of a METHOD or FUNCTION, built from the call's arguments. It
@@ -163,6 +184,11 @@ class args : public Vars {
   [[nodiscard]] constexpr const first_output_t<V>& first_output() const noexcept {
     return get_field<first_output_index<V>>(static_cast<const V&>(*this)).get();
   }
+  /// Nothing, for a method with neither return type nor output (`return in.first_output();`
+  /// then fits every method declared without return type).
+  template <class V = Vars>
+    requires(first_output_index<V> >= field_count<V>)
+  constexpr void first_output() const noexcept {}
 
  private:
   template <std::size_t Position, class A>
@@ -200,6 +226,10 @@ class args : public Vars {
     } else if constexpr (detail::is_output<field>::value) {
       static_assert(detail::dependent_false<V>,
                     "iecoop: a VAR_OUTPUT is not passed in; read it after the call with \"name\"_ >> variable");
+    } else if constexpr (detail::is_temp<field>::value) {
+      static_assert(detail::dependent_false<V>,
+                    "iecoop: a METHOD's or FUNCTION's VAR (temp<T>) is its own, not passed by the caller; pass only "
+                    "its inputs and in-outs, and declare the VARs after them");
     } else {
       assign_argument(target, std::forward<V>(value));
     }

@@ -28,6 +28,7 @@
 #pragma once
 
 #include <compare>
+#include <cstddef>
 #include <cstdlib>
 #include <new>
 #include <type_traits>
@@ -94,6 +95,17 @@ using property_owner =
 template <class Option, class... Options>
 inline constexpr bool has_option = (std::is_same_v<Option, Options> || ...);
 
+template <class Option>
+struct is_monitoring_option : std::false_type {};
+template <>
+struct is_monitoring_option<monitoring::call> : std::true_type {};
+template <auto Shadow>
+struct is_monitoring_option<monitoring::variable<Shadow>> : std::true_type {};
+/// The options property<> knows.
+template <class Option>
+inline constexpr bool is_property_option = std::is_same_v<Option, owner_only_get> || std::is_same_v<Option, owner_only_set> ||
+                                           is_monitoring_option<Option>::value;
+
 template <class... Options>
 struct monitoring_of {
   using type = monitoring::call;
@@ -133,6 +145,12 @@ class property {
                                    typename detail::accessor_class<decltype(Set)>::type>,
                 "iecoop: a property's Get and Set accessors belong to the same block; declare both (or "
                 "overrides of both) in the block that declares the property");
+  static_assert((detail::is_property_option<Options> && ...),
+                "iecoop: a property's options are owner_only_get, owner_only_set, monitoring::call and "
+                "monitoring::variable<&FB::shadow>; check the spelling of the others");
+  static_assert((std::size_t{0} + ... + (detail::is_monitoring_option<Options>::value ? 1 : 0)) <= 1,
+                "iecoop: a property has one monitoring mode ({attribute 'monitoring'}): monitoring::call or "
+                "monitoring::variable<&FB::shadow>, not both");
   static constexpr bool owner_get = detail::has_option<owner_only_get, Options...>;
   static constexpr bool owner_set = detail::has_option<owner_only_set, Options...>;
   static constexpr bool open = !owner_get && !owner_set;

@@ -5,6 +5,7 @@
 //   read_only<T, Owner>  a variable only Owner writes (the standard blocks' VAR_OUTPUT)
 //   in_out<T>        VAR_IN_OUT: a reference bound at the call; using it unbound is a fault
 //   output<T>        VAR_OUTPUT of a METHOD or FUNCTION: `"x"_ >> y` copies it out after the call
+//   temp<T>          VAR of a METHOD or FUNCTION, beside its inputs: not passed by callers
 //
 // VAR_INPUT and the VAR_OUTPUT of blocks and programs are plain members.
 #pragma once
@@ -429,11 +430,80 @@ class output {
   void (*deliver_)(void*, const T&) = nullptr;
 };
 
+/**
+ * A VAR of a METHOD or FUNCTION, declared with its inputs and outputs in the variables struct
+ * (`temp<INT> x;` for `VAR x : INT; END_VAR`): it starts every call at its declared initial
+ * value, the body reads and writes it as `in.x` like the method's other variables, and no
+ * caller passes it. So every plain name of a method's ST is `in.` + the name when the method
+ * declares it (ST: the method's variables shadow the block's), and the block's is `this->x`
+ * (THIS^.x) — with no C++ local shadowing a member.
+ */
+template <class T>
+class temp {
+ public:
+  using value_type = T;
+  using iecoop_value_wrapper = void;
+
+  constexpr temp() = default;
+  /// The declared initial value: `temp<INT> x{5};` (ST: `x : INT := 5;`).
+  constexpr explicit temp(const T& initial) : value_(initial) {}
+
+  constexpr temp& operator=(const T& value) {
+    detail::copy_value(value_, value);
+    return *this;
+  }
+  template <class V>
+    requires detail::converts_through_wrapper<T, V>
+  constexpr temp& operator=(const V& other) {
+    detail::assign_value(value_, detail::value_of(other));
+    return *this;
+  }
+  template <class V>
+    requires detail::rejected_value<T, V>
+  constexpr void operator=(const V&) {
+    detail::reject_value<T, V>();
+  }
+  constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
+  [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
+  [[nodiscard]] constexpr T& ref() noexcept { return value_; }
+  constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }
+  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(value_); }
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index) const
+    requires requires(const T& v) { v[std::forward<I>(index)]; }
+  {
+    return value_[std::forward<I>(index)];
+  }
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index)
+    requires requires(T& v) { v[std::forward<I>(index)]; }
+  {
+    return value_[std::forward<I>(index)];
+  }
+  constexpr operator bool() const noexcept  // NOLINT: a BOOL is a condition
+    requires std::is_same_v<T, BOOL>
+  {
+    return static_cast<bool>(value_);
+  }
+  explicit constexpr operator bool() const
+    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
+  {
+    return static_cast<bool>(value_);
+  }
+
+ private:
+  T value_{};
+};
+
 namespace detail {
 template <class T>
 struct is_output : std::false_type {};
 template <class T>
 struct is_output<output<T>> : std::true_type {};
+template <class T>
+struct is_temp : std::false_type {};
+template <class T>
+struct is_temp<temp<T>> : std::true_type {};
 }  // namespace detail
 
 }  // namespace iecoop
