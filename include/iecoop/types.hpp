@@ -1110,6 +1110,148 @@ template <> struct detail::iec_name<REAL> { static constexpr std::string_view va
 template <> struct detail::iec_name<LREAL> { static constexpr std::string_view value = "LREAL"; };
 
 // ---------------------------------------------------------------------------------------
+// REAL with integers
+
+namespace detail {
+
+/// The floating type an integer operand meets, or void: a REAL/LREAL's own, or a C++ float
+/// (REAL) or double (LREAL) constant.
+template <class X>
+struct real_side {
+  using type = void;
+};
+template <class R>
+struct real_side<real<R>> {
+  using type = R;
+};
+template <>
+struct real_side<float> {
+  using type = float;
+};
+template <>
+struct real_side<double> {
+  using type = double;
+};
+
+/// An IEC integer value (a variable's, or an intermediate result) beside a REAL/LREAL (or a
+/// C++ float/double): ST converts the integer implicitly where the real type holds it exactly
+/// (INT with REAL, DINT with LREAL), and computes in the real type.
+template <class I, class F>
+concept integer_with_real = (is_integer<I>::value || is_intermediate<I>::value) && !std::is_void_v<typename real_side<F>::type> &&
+                            std::is_convertible_v<nominal_t<I>, real<typename real_side<F>::type>>;
+template <class A, class B>
+concept real_mix = integer_with_real<A, B> || integer_with_real<B, A>;
+/// An IEC integer value beside a REAL/LREAL that cannot hold it exactly (DINT with REAL).
+template <class I, class F>
+concept inexact_integer_with_real = (is_integer<I>::value || is_intermediate<I>::value) && is_real<F>::value &&
+                                    !std::is_convertible_v<nominal_t<I>, F>;
+template <class A, class B>
+concept inexact_real_mix = inexact_integer_with_real<A, B> || inexact_integer_with_real<B, A>;
+template <class A, class B>
+using inexact_real_t = std::conditional_t<is_real<A>::value, A, B>;
+template <class A, class B>
+constexpr inexact_real_t<A, B> no_exact_real() {
+  using I = std::conditional_t<is_real<A>::value, B, A>;
+  no_implicit_conversion<spelled_iec_name_t<nominal_t<I>>, spelled_iec_name_t<inexact_real_t<A, B>>>();
+  return inexact_real_t<A, B>();
+}
+template <class A, class B>
+using real_mix_rep = std::conditional_t<std::is_void_v<typename real_side<A>::type>, typename real_side<B>::type,
+                                       typename real_side<A>::type>;
+
+template <class R, class X>
+constexpr R as_real(const X& x) noexcept {
+  if constexpr (is_real<X>::value) {
+    return x.value();
+  } else if constexpr (is_integer<X>::value || is_intermediate<X>::value) {
+    return static_cast<R>(x.value());
+  } else {
+    return static_cast<R>(x);
+  }
+}
+
+}  // namespace detail
+
+// `r * i`, `i / 2.0`, `(i + 1) * 0.5f`: the integer converts to the real type (as ST converts
+// INT to REAL and DINT to LREAL implicitly) and the result is a REAL or LREAL. An integer a
+// REAL cannot hold exactly (DINT with REAL) needs a conversion, as in ST (CODESYS C0197).
+template <class A, class B>
+  requires detail::real_mix<A, B>
+constexpr real<detail::real_mix_rep<A, B>> operator+(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return detail::as_real<R>(a) + detail::as_real<R>(b);
+}
+template <class A, class B>
+  requires detail::real_mix<A, B>
+constexpr real<detail::real_mix_rep<A, B>> operator-(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return detail::as_real<R>(a) - detail::as_real<R>(b);
+}
+template <class A, class B>
+  requires detail::real_mix<A, B>
+constexpr real<detail::real_mix_rep<A, B>> operator*(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return detail::as_real<R>(a) * detail::as_real<R>(b);
+}
+template <class A, class B>
+  requires detail::real_mix<A, B>
+constexpr real<detail::real_mix_rep<A, B>> operator/(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return detail::as_real<R>(a) / detail::as_real<R>(b);
+}
+// An integer the real type cannot hold exactly: rejected, naming the conversion to write.
+template <class A, class B>
+  requires detail::inexact_real_mix<A, B>
+detail::inexact_real_t<A, B> operator+(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+template <class A, class B>
+  requires detail::inexact_real_mix<A, B>
+detail::inexact_real_t<A, B> operator-(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+template <class A, class B>
+  requires detail::inexact_real_mix<A, B>
+detail::inexact_real_t<A, B> operator*(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+template <class A, class B>
+  requires detail::inexact_real_mix<A, B>
+detail::inexact_real_t<A, B> operator/(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+
+// Comparisons of an integer with a C++ float or double constant (with a REAL they are REAL's).
+template <class A, class B>
+  requires(detail::real_mix<A, B> && !detail::is_real<A>::value && !detail::is_real<B>::value)
+constexpr BOOL operator==(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return BOOL(detail::as_real<R>(a) == detail::as_real<R>(b));
+}
+template <class A, class B>
+  requires(detail::real_mix<A, B> && !detail::is_real<A>::value && !detail::is_real<B>::value)
+constexpr BOOL operator!=(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return BOOL(detail::as_real<R>(a) != detail::as_real<R>(b));
+}
+template <class A, class B>
+  requires(detail::real_mix<A, B> && !detail::is_real<A>::value && !detail::is_real<B>::value)
+constexpr BOOL operator<(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return BOOL(detail::as_real<R>(a) < detail::as_real<R>(b));
+}
+template <class A, class B>
+  requires(detail::real_mix<A, B> && !detail::is_real<A>::value && !detail::is_real<B>::value)
+constexpr BOOL operator<=(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return BOOL(detail::as_real<R>(a) <= detail::as_real<R>(b));
+}
+template <class A, class B>
+  requires(detail::real_mix<A, B> && !detail::is_real<A>::value && !detail::is_real<B>::value)
+constexpr BOOL operator>(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return BOOL(detail::as_real<R>(a) > detail::as_real<R>(b));
+}
+template <class A, class B>
+  requires(detail::real_mix<A, B> && !detail::is_real<A>::value && !detail::is_real<B>::value)
+constexpr BOOL operator>=(const A& a, const B& b) noexcept {
+  using R = detail::real_mix_rep<A, B>;
+  return BOOL(detail::as_real<R>(a) >= detail::as_real<R>(b));
+}
+
+// ---------------------------------------------------------------------------------------
 // The IEC generic types (ANY_INT, ANY_BIT, ...) as concepts.
 
 /// SINT..LINT, USINT..ULINT (IEC ANY_INT).

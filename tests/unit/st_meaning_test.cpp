@@ -173,6 +173,27 @@ TEST_SUITE("ST meaning: integer expressions compute in the register width") {
   }
 }
 
+TEST_SUITE("ST meaning: REAL meets integers as ST converts them") {
+  TEST_CASE("r := r * i; the integer converts to REAL where REAL holds it exactly") {
+    REAL r = 1.5f;
+    const INT i = 3;
+    r = r * i;  // r := r * i;
+    CHECK(r == 4.5f);
+    r = i * 2.5f;  // r := i * 2.5;   (INT * REAL: a REAL)
+    CHECK(r == 7.5f);
+    LREAL l = 0.5;
+    const DINT d = 100000;
+    l = l + d;  // l := l + d;   (DINT with LREAL: exact)
+    CHECK(l == 100000.5);
+    l = d / 3.0;  // not an integer division: a REAL operand makes the division REAL
+    CHECK(l > 33333.33);
+    r = (i + 1) * 0.5f;  // an intermediate result too
+    CHECK(r == 2.0f);
+    const BOOL b = (i > 2.5) & (r < i) & (d == 100000.0);
+    CHECK(b == TRUE);
+  }
+}
+
 TEST_SUITE("ST meaning: comparisons yield BOOL") {
   TEST_CASE("b := x = 1 OR x = 3;") {
     INT x = 3;

@@ -74,7 +74,7 @@ concept wrapper_operands = (value_wrapper<A> || value_wrapper<B>) && wrapper_par
 // which check the constant while compiling (the wrapper converts to the integer for them).
 template <class X, class Y>
 concept wrapped_integer_with_number =
-    value_wrapper<X> && AnyInteger<unwrapped_t<X>> && std::is_arithmetic_v<std::remove_cvref_t<Y>>;
+    value_wrapper<X> && AnyInteger<unwrapped_t<X>> && cpp_integer<std::remove_cvref_t<Y>>;
 template <class A, class B>
 concept wrapper_arithmetic =
     wrapper_operands<A, B> && !wrapped_integer_with_number<A, B> && !wrapped_integer_with_number<B, A>;
