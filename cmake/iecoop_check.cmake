@@ -1,8 +1,11 @@
 # iecoop_check(<target> [BUILD] [NAME <test name>] [FLAGS <flag>...])
 #
-# Runs iecoop-check (docs/iecoop-check.md) over the C++ sources of <target> with the target's
-# include directories and compile definitions (its own and those of the libraries it links)
-# and -std=c++20:
+# Runs iecoop-check (docs/iecoop-check.md) over the C++ sources of <target>, with their
+# compile commands where the build writes compile_commands.json (CMAKE_EXPORT_COMPILE_COMMANDS
+# with a Makefile or Ninja generator), else with -std=c++20 and the target's include
+# directories and compile definitions (its own and those of the libraries it links; all as -I,
+# so that findings in the headers of other libraries are reported too: give those as FLAGS
+# -isystem <dir>, or export the compile commands):
 #   - as the CTest test <test name> (default: iecoop_check.<target>); call enable_testing();
 #   - with BUILD, also in every build, as the target <target>_iecoop_check (part of ALL): a
 #     finding fails the build.
@@ -43,9 +46,13 @@ function(iecoop_check target)
 
   set(includes "$<TARGET_PROPERTY:${target},INCLUDE_DIRECTORIES>")
   set(definitions "$<TARGET_PROPERTY:${target},COMPILE_DEFINITIONS>")
-  set(command ${checker} ${files} -- -std=c++20
-      "$<$<BOOL:${includes}>:-I$<JOIN:${includes},;-I>>"
-      "$<$<BOOL:${definitions}>:-D$<JOIN:${definitions},;-D>>"
+  set(database)
+  if(CMAKE_EXPORT_COMPILE_COMMANDS AND CMAKE_GENERATOR MATCHES "Makefiles|Ninja")
+    set(database -p ${CMAKE_BINARY_DIR})
+  endif()
+  set(command ${checker} ${database} ${files} -- -std=c++20
+      "$<$<BOOL:${includes}>:-I$<JOIN:${includes},$<SEMICOLON>-I>>"
+      "$<$<BOOL:${definitions}>:-D$<JOIN:${definitions},$<SEMICOLON>-D>>"
       ${arg_FLAGS})
 
   if(NOT arg_NAME)

@@ -4,6 +4,9 @@
 //     iecoop-check <file>... -- <compiler flags>     e.g. -- -std=c++20 -Iinclude
 //     iecoop-check -p <build dir> [<file>...]       flags from <build dir>/compile_commands.json
 //
+// With -p, a file not in the database takes the flags after -- if there are any, else the
+// flags clang's tools infer for it from the files near it.
+//
 // Each finding is a line `file:line:col: error: iecoop-check: <rule>; <fix>` on stdout (with
 // `note:` lines after it). Exit status: 0 clean, 1 findings, 2 bad usage or a file that does not
 // compile (its compiler errors go to stderr).
@@ -16,6 +19,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -39,7 +43,8 @@ constexpr std::string_view usage_text =
     "       iecoop-check -p <build dir> [<file>...] [-- <flags for files not in the database>]\n"
     "Checks iecoop programs for what CODESYS would reject or run differently and C++ does not\n"
     "catch (docs/iecoop-check.md). -p reads <build dir>/compile_commands.json; without files it\n"
-    "checks every file in it. Exit status: 0 clean, 1 findings, 2 bad usage or a file that does\n"
+    "checks every file in it; a file not in it takes the flags after --, else flags inferred\n"
+    "from the files near it. Exit status: 0 clean, 1 findings, 2 bad usage or a file that does\n"
     "not compile.\n";
 
 struct options {
@@ -115,50 +120,68 @@ std::string absolute(const std::string& path) {
 
 /// The files to check and their arguments; returns false (having said why) if one has none.
 bool plan(const options& opts, std::vector<job>& jobs) {
+  for (const std::string& file : opts.files) {
+    if (access(file.c_str(), R_OK) != 0) {
+      std::fprintf(stderr, "iecoop-check: error: %s: no such file\n", file.c_str());
+      return false;
+    }
+  }
   if (opts.build_dir.empty()) {
     for (const std::string& file : opts.files) jobs.push_back(job{file, {}, parser_arguments(opts.flags), false});
     return true;
   }
-  CXCompilationDatabase_Error error = CXCompilationDatabase_NoError;
-  CXCompilationDatabase database = clang_CompilationDatabase_fromDirectory(opts.build_dir.c_str(), &error);
+  const std::string database_file = opts.build_dir + "/compile_commands.json";
+  CXCompilationDatabase_Error error = CXCompilationDatabase_CanNotLoadDatabase;
+  CXCompilationDatabase database = nullptr;
+  if (access(database_file.c_str(), R_OK) == 0) {  // else libclang would print its own complaint
+    database = clang_CompilationDatabase_fromDirectory(opts.build_dir.c_str(), &error);
+  }
   if (error != CXCompilationDatabase_NoError || database == nullptr) {
-    std::fprintf(stderr, "iecoop-check: error: cannot read %s/compile_commands.json (configure with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)\n",
-                 opts.build_dir.c_str());
+    std::fprintf(stderr, "iecoop-check: error: cannot read %s (configure with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)\n",
+                 database_file.c_str());
     return false;
   }
   std::set<std::string> seen;
-  const auto add_commands = [&](CXCompileCommands commands) {
-    const unsigned count = commands != nullptr ? clang_CompileCommands_getSize(commands) : 0;
-    for (unsigned i = 0; i < count; ++i) {
-      const CXCompileCommand command = clang_CompileCommands_getCommand(commands, i);
-      const std::string file = text(clang_CompileCommand_getFilename(command));
-      if (!seen.insert(file).second) continue;  // a file built twice is checked once
-      std::vector<std::string> arguments;
-      const unsigned argument_count = clang_CompileCommand_getNumArgs(command);
-      for (unsigned k = 1; k < argument_count; ++k) arguments.push_back(text(clang_CompileCommand_getArg(command, k)));
-      jobs.push_back(job{file, text(clang_CompileCommand_getDirectory(command)), parser_arguments(arguments), true});
-    }
-    return count;
+  const auto add_command = [&](CXCompileCommand command) {
+    const std::string file = text(clang_CompileCommand_getFilename(command));
+    if (!seen.insert(file).second) return;  // a file built twice is checked once
+    std::vector<std::string> arguments;
+    const unsigned argument_count = clang_CompileCommand_getNumArgs(command);
+    for (unsigned k = 1; k < argument_count; ++k) arguments.push_back(text(clang_CompileCommand_getArg(command, k)));
+    jobs.push_back(job{file, text(clang_CompileCommand_getDirectory(command)), parser_arguments(arguments), true});
   };
-  bool ok = true;
-  if (opts.files.empty()) {
-    CXCompileCommands all = clang_CompilationDatabase_getAllCompileCommands(database);
-    add_commands(all);
-    clang_CompileCommands_dispose(all);
+  // The database's own entries, by the file's real path.
+  CXCompileCommands all = clang_CompilationDatabase_getAllCompileCommands(database);
+  std::map<std::string, CXCompileCommand> entries;
+  const unsigned count = all != nullptr ? clang_CompileCommands_getSize(all) : 0;
+  for (unsigned i = 0; i < count; ++i) {
+    const CXCompileCommand command = clang_CompileCommands_getCommand(all, i);
+    std::string file = text(clang_CompileCommand_getFilename(command));
+    if (file.empty() || file[0] != '/') file = text(clang_CompileCommand_getDirectory(command)) + "/" + file;
+    entries.emplace(absolute(file), command);
+    if (opts.files.empty()) add_command(command);
   }
+  bool ok = true;
   for (const std::string& file : opts.files) {
-    CXCompileCommands commands = clang_CompilationDatabase_getCompileCommands(database, absolute(file).c_str());
-    if (add_commands(commands) == 0) {
-      if (opts.has_flags) {
-        jobs.push_back(job{file, {}, parser_arguments(opts.flags), false});
+    const auto entry = entries.find(absolute(file));
+    if (entry != entries.end()) {
+      add_command(entry->second);
+    } else if (opts.has_flags) {
+      jobs.push_back(job{file, {}, parser_arguments(opts.flags), false});
+    } else {
+      // Not built itself (a header, say): the flags of a file near it, as clang's tools infer them.
+      CXCompileCommands inferred = clang_CompilationDatabase_getCompileCommands(database, absolute(file).c_str());
+      if (inferred != nullptr && clang_CompileCommands_getSize(inferred) > 0) {
+        add_command(clang_CompileCommands_getCommand(inferred, 0));
       } else {
-        std::fprintf(stderr, "iecoop-check: error: %s is not in %s/compile_commands.json; give its flags after --\n",
-                     file.c_str(), opts.build_dir.c_str());
+        std::fprintf(stderr, "iecoop-check: error: %s is not in %s; give its flags after --\n", file.c_str(),
+                     database_file.c_str());
         ok = false;
       }
+      clang_CompileCommands_dispose(inferred);
     }
-    clang_CompileCommands_dispose(commands);
   }
+  clang_CompileCommands_dispose(all);
   clang_CompilationDatabase_dispose(database);
   return ok;
 }
