@@ -46,3 +46,13 @@ struct FB_Grandchild : extends<FB_Grandchild, FB_Derived> {
 struct FB_Plain : FB_Base {
   INT M(args<M_vars> in) { return in.x * 2; }                       // hides FB_Base::M
 };
+
+// A method whose name begins with "operator" is a method like any other.
+struct FB_Panel : function_block<FB_Panel> {
+  BOOL operatorLogin() { return TRUE; }
+  virtual void body() {}
+};
+struct FB_TouchPanel : extends<FB_TouchPanel, FB_Panel> {
+  BOOL operatorLogin() { return FALSE; }                             // hides FB_Panel::operatorLogin
+  void body() override {}
+};

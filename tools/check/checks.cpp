@@ -59,12 +59,12 @@ class checker {
   // --- Where things are ---------------------------------------------------------------
 
   /// iecoop's include directory (…/include/iecoop): where the class template iecoop::local
-  /// or iecoop::function_block is declared. Everything below it is iecoop's, not the user's.
+  /// or iecoop::function_block is defined. Everything below it is iecoop's, not the user's.
   void find_library_dir(CXCursor root) {
     for (const CXCursor top : children(root)) {
       if (clang_getCursorKind(top) != CXCursor_Namespace || spelling(top) != "iecoop") continue;
       for (const CXCursor member : children(top)) {
-        if (clang_getCursorKind(member) != CXCursor_ClassTemplate) continue;
+        if (clang_getCursorKind(member) != CXCursor_ClassTemplate || clang_isCursorDefinition(member) == 0) continue;
         const std::string name = spelling(member);
         if (name != "local" && name != "function_block") continue;
         CXFile file = nullptr;
@@ -178,8 +178,16 @@ class checker {
     const CXCursorKind kind = clang_getCursorKind(c);
     if (kind != CXCursor_CXXMethod && kind != CXCursor_FunctionTemplate) return false;
     const std::string name = spelling(c);
-    if (name.rfind("operator", 0) == 0 || not_dispatched.count(name) != 0) return false;
+    if (is_operator_name(name) || not_dispatched.count(name) != 0) return false;
     return clang_CXXMethod_isStatic(c) == 0;
+  }
+
+  /// `operator=`, `operator()`, `operator new`, not a method named `operatorPanel`.
+  static bool is_operator_name(const std::string& name) {
+    constexpr std::size_t length = sizeof("operator") - 1;
+    if (name.size() <= length || name.compare(0, length, "operator") != 0) return false;
+    const char next = name[length];
+    return !((next >= 'a' && next <= 'z') || (next >= 'A' && next <= 'Z') || (next >= '0' && next <= '9') || next == '_');
   }
 
   /// Check 1 (a method hides its base's instead of overriding it) and check 4 (a variable
