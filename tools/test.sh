@@ -4,7 +4,8 @@
 #   2. clang++ (-O3),
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
 # tests, the compile-fail checks, the header self-containment and -fno-exceptions -fno-rtti
-# checks, the examples and the consumer projects (find_package and add_subdirectory).
+# checks, the examples, the consumer projects (find_package and add_subdirectory) and
+# iecoop-check's tests (the examples checked clean with it).
 #   3. the firmware examples for Cortex-M3 and Cortex-M4F (CMake presets cortex-m3 and
 #      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
 #      (CTest label `embedded`; see docs/embedded.md).
@@ -14,6 +15,9 @@ set -eu
 cd "$(dirname "$0")/.."
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ clang doctest-dev libfmt-dev libbenchmark-dev
+# iecoop-check (docs/iecoop-check.md) is built on libclang's C API: its headers come with
+# libclang-14-dev (23 MB to download; clang above already brings the library).
+iecoop_require_packages libclang-14-dev
 # The slim set of docs/embedded.md: the firmware links with arm-none-eabi-gcc and needs
 # neither libstdc++-arm-none-eabi-newlib's 1.5 GB of libraries nor QEMU's recommends.
 iecoop_require_packages gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
@@ -28,7 +32,7 @@ run() {
   compiler=$2
   shift 2
   echo "== iecoop: $name"
-  cmake -S . -B "build/$name" -DCMAKE_CXX_COMPILER="$compiler" -DIECOOP_WERROR=ON "$@"
+  cmake -S . -B "build/$name" -DCMAKE_CXX_COMPILER="$compiler" -DIECOOP_WERROR=ON -DIECOOP_BUILD_CHECK=ON "$@"
   cmake --build "build/$name" -j "$jobs"
   ctest --test-dir "build/$name" -j "$jobs" --output-on-failure
 }

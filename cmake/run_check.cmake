@@ -1,0 +1,65 @@
+# Runs iecoop-check once and checks what it says: TOOL with ARGS (separated by |), in
+# WORKING_DIRECTORY as set by the test. Paths under SOURCE_DIR are printed relative to it.
+#   STATUS=<n>        the exit status it must end with (0 clean, 1 findings, 2 errors);
+#   EXPECTED=<files>  (|-separated) stdout must be exactly their contents, concatenated;
+#                     without it, stdout must be empty (unless KNOWN is given);
+#   ERROR=<regex>     stderr must match it; without it, stderr must be empty;
+#   KNOWN=<file>      for the examples: clean, or findings each listed in <file> as
+#                     `<file>: <message>` (the findings are reported, the test passes).
+cmake_minimum_required(VERSION 3.25)
+string(REPLACE "|" ";" ARGS "${ARGS}")
+execute_process(COMMAND "${TOOL}" ${ARGS} RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
+string(REPLACE "${SOURCE_DIR}/" "" output "${output}")
+set(shown "iecoop-check ${ARGS}\nexit status ${status}\n--- stdout:\n${output}--- stderr:\n${errors}")
+
+if(DEFINED ERROR)
+  if(NOT errors MATCHES "${ERROR}")
+    message(FATAL_ERROR "stderr does not match '${ERROR}'\n${shown}")
+  endif()
+elseif(NOT errors STREQUAL "")
+  message(FATAL_ERROR "iecoop-check wrote to stderr\n${shown}")
+endif()
+
+if(DEFINED KNOWN)
+  if(status EQUAL 0 AND output STREQUAL "")
+    return()
+  endif()
+  if(NOT status EQUAL 1)
+    message(FATAL_ERROR "exit status ${status}, not 0 (clean) or 1 (known findings)\n${shown}")
+  endif()
+  # Lines as list elements; the messages' own semicolons stand in as <semicolon>.
+  file(READ "${KNOWN}" known)
+  string(REPLACE ";" "<semicolon>" known "${known}")
+  string(REPLACE "\n" ";" known "${known}")
+  string(REPLACE ";" "<semicolon>" output_lines "${output}")
+  string(REPLACE "\n" ";" output_lines "${output_lines}")
+  foreach(line IN LISTS output_lines)
+    if(line STREQUAL "" OR line MATCHES "^[^:]+:[0-9]+:[0-9]+: note: ")
+      continue()
+    endif()
+    if(NOT line MATCHES "^([^:]+):[0-9]+:[0-9]+: error: iecoop-check: (.*)$")
+      message(FATAL_ERROR "not a finding: ${line}\n${shown}")
+    endif()
+    list(FIND known "${CMAKE_MATCH_1}: ${CMAKE_MATCH_2}" index)
+    if(index EQUAL -1)
+      message(FATAL_ERROR "a finding not listed in ${KNOWN}: ${line}\n${shown}")
+    endif()
+  endforeach()
+  message(STATUS "known findings (listed in ${KNOWN}):\n${output}")
+  return()
+endif()
+
+if(NOT status EQUAL STATUS)
+  message(FATAL_ERROR "exit status ${status}, expected ${STATUS}\n${shown}")
+endif()
+set(expected "")
+if(DEFINED EXPECTED)
+  string(REPLACE "|" ";" EXPECTED "${EXPECTED}")
+  foreach(file IN LISTS EXPECTED)
+    file(READ "${file}" part)
+    string(APPEND expected "${part}")
+  endforeach()
+endif()
+if(NOT output STREQUAL expected)
+  message(FATAL_ERROR "stdout differs from the expected findings\n--- expected:\n${expected}${shown}")
+endif()

@@ -1,0 +1,486 @@
+// iecoop-check: the checks. One walk over the user's declarations and code in a translation
+// unit; iecoop's own headers and the system headers are skipped whole.
+#include "checks.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cursor.hpp"
+
+namespace iecoop_check {
+namespace {
+
+/// What a class is to the checks: an iecoop block or not, and the blocks it derives from
+/// that the user wrote (nearest first: its base, then its base's base...).
+struct class_info {
+  bool is_block = false;
+  std::vector<CXCursor> bases;
+};
+
+/// A method's variables: the parameter `args<Vars> in` and the names of Vars's fields.
+struct method_variables {
+  std::string parameter;
+  std::set<std::string> fields;
+};
+
+/// The function whose code the walk is in (a lambda's code is its enclosing function's).
+struct code_context {
+  CXCursor function;
+  CXCursor owner_class;                 // the class of a member function, else null
+  std::vector<method_variables> vars;  // for a method of a block: its args<Vars> parameters
+};
+
+// Lifecycle methods are called by iecoop through the block's own type, not dispatched.
+const std::set<std::string> not_dispatched = {"FB_Init", "FB_Reinit", "FB_Exit"};
+
+const std::set<std::string> assignment_operators = {"operator=",  "operator+=", "operator-=",  "operator*=",
+                                                    "operator/=", "operator%=", "operator&=",  "operator|=",
+                                                    "operator^=", "operator<<=", "operator>>=", "operator++",
+                                                    "operator--"};
+
+class checker {
+ public:
+  explicit checker(CXTranslationUnit unit) : unit_(unit) {}
+
+  std::vector<finding> run() {
+    const CXCursor root = clang_getTranslationUnitCursor(unit_);
+    find_library_dir(root);
+    for (const CXCursor child : children(root)) walk(child);
+    return std::move(findings_);
+  }
+
+ private:
+  // --- Where things are ---------------------------------------------------------------
+
+  /// iecoop's include directory (…/include/iecoop): where the class template iecoop::local
+  /// or iecoop::function_block is defined. Everything below it is iecoop's, not the user's.
+  void find_library_dir(CXCursor root) {
+    for (const CXCursor top : children(root)) {
+      if (clang_getCursorKind(top) != CXCursor_Namespace || spelling(top) != "iecoop") continue;
+      for (const CXCursor member : children(top)) {
+        if (clang_getCursorKind(member) != CXCursor_ClassTemplate || clang_isCursorDefinition(member) == 0) continue;
+        const std::string name = spelling(member);
+        if (name != "local" && name != "function_block") continue;
+        CXFile file = nullptr;
+        clang_getExpansionLocation(clang_getCursorLocation(member), &file, nullptr, nullptr, nullptr);
+        const std::string path = real_path(file);
+        const std::size_t slash = path.rfind('/');
+        if (slash != std::string::npos) {
+          library_dir_ = path.substr(0, slash + 1);
+          return;
+        }
+      }
+    }
+  }
+
+  static std::string real_path(CXFile file) {
+    if (file == nullptr) return {};
+    std::string path = text(clang_File_tryGetRealPathName(file));
+    if (path.empty()) path = text(clang_getFileName(file));
+    return path;
+  }
+
+  /// A file the user wrote: not a system header, not one of iecoop's headers.
+  bool is_user_location(CXSourceLocation where) {
+    if (clang_Location_isInSystemHeader(where) != 0) return false;
+    CXFile file = nullptr;
+    clang_getExpansionLocation(where, &file, nullptr, nullptr, nullptr);
+    if (file == nullptr) return false;
+    const auto known = user_files_.find(file);
+    if (known != user_files_.end()) return known->second;
+    const bool user = library_dir_.empty() || real_path(file).rfind(library_dir_, 0) != 0;
+    user_files_.emplace(file, user);
+    return user;
+  }
+
+  static location location_of(CXCursor c) {
+    CXFile file = nullptr;
+    unsigned line = 0;
+    unsigned column = 0;
+    clang_getExpansionLocation(clang_getCursorLocation(c), &file, &line, &column, nullptr);
+    return location{file != nullptr ? text(clang_getFileName(file)) : std::string("<unknown>"), line, column};
+  }
+
+  void report(CXCursor at, std::string message, std::vector<note> notes = {}) {
+    if (!is_user_location(clang_getCursorLocation(at))) return;
+    findings_.push_back(finding{location_of(at), std::move(message), std::move(notes)});
+  }
+
+  // --- Classes ------------------------------------------------------------------------
+
+  /// Whether `cls` is an iecoop block, and the user's blocks it derives from. A block
+  /// derives, directly or through other blocks, from iecoop::function_block<>,
+  /// iecoop::program<> or iecoop::extends<> (whose second argument is the base block).
+  const class_info& info(CXCursor cls) {
+    cls = members_of(cls);
+    const std::string key = usr(cls);
+    const auto known = classes_.find(key);
+    if (known != classes_.end()) return known->second;
+    classes_[key] = class_info{};  // a class that (wrongly) reaches itself ends here
+    class_info result;
+    const auto add_base = [&](CXCursor base) {
+      base = members_of(base);
+      const class_info& base_info = info(base);
+      if (!base_info.is_block) return;
+      result.is_block = true;
+      result.bases.push_back(base);
+      result.bases.insert(result.bases.end(), base_info.bases.begin(), base_info.bases.end());
+    };
+    for (const CXCursor child : children(cls)) {
+      if (clang_getCursorKind(child) != CXCursor_CXXBaseSpecifier) continue;
+      const CXType base_type = clang_getCursorType(child);
+      const CXCursor base = class_of(base_type);
+      if (is_null(base)) continue;
+      if (in_namespace_iecoop(base)) {
+        const std::string name = spelling(base);
+        if (name == "function_block" || name == "program") {
+          result.is_block = true;
+        } else if (name == "extends") {
+          result.is_block = true;
+          const CXCursor extended = class_of(template_argument(base_type, 1));
+          if (!is_null(extended) && !in_namespace_iecoop(extended)) add_base(extended);
+        }
+      } else {
+        add_base(base);
+      }
+    }
+    return classes_[key] = std::move(result);
+  }
+
+  /// Whether `cls` is `ancestor` or derives from it (through the user's blocks).
+  bool is_or_derives_from(CXCursor cls, CXCursor ancestor) {
+    const std::string wanted = usr(members_of(ancestor));
+    if (usr(members_of(cls)) == wanted) return true;
+    const class_info& cls_info = info(cls);
+    return std::any_of(cls_info.bases.begin(), cls_info.bases.end(),
+                       [&](CXCursor base) { return usr(base) == wanted; });
+  }
+
+  /// A class's name as its block's code writes it: with the classes it is nested in.
+  static std::string class_name(CXCursor cls) {
+    std::string name = spelling(members_of(cls));
+    for (CXCursor outer = clang_getCursorSemanticParent(cls); is_class_kind(clang_getCursorKind(outer));
+         outer = clang_getCursorSemanticParent(outer)) {
+      name = spelling(outer) + "::" + name;
+    }
+    return name;
+  }
+
+  /// A member function that dispatch is about: not static, not an operator, constructor,
+  /// destructor or conversion, not a lifecycle method.
+  static bool is_dispatchable_method(CXCursor c) {
+    const CXCursorKind kind = clang_getCursorKind(c);
+    if (kind != CXCursor_CXXMethod && kind != CXCursor_FunctionTemplate) return false;
+    const std::string name = spelling(c);
+    if (is_operator_name(name) || not_dispatched.count(name) != 0) return false;
+    return clang_CXXMethod_isStatic(c) == 0;
+  }
+
+  /// `operator=`, `operator()`, `operator new`, not a method named `operatorPanel`.
+  static bool is_operator_name(const std::string& name) {
+    constexpr std::size_t length = sizeof("operator") - 1;
+    if (name.size() <= length || name.compare(0, length, "operator") != 0) return false;
+    const char next = name[length];
+    return !((next >= 'a' && next <= 'z') || (next >= 'A' && next <= 'Z') || (next >= '0' && next <= '9') || next == '_');
+  }
+
+  /// Check 1 (a method hides its base's instead of overriding it) and check 4 (a variable
+  /// declared again) for a block class.
+  void check_block_class(CXCursor cls) {
+    const class_info& cls_info = info(cls);
+    if (!cls_info.is_block || cls_info.bases.empty()) return;
+    const std::vector<CXCursor> bases = cls_info.bases;  // info() may grow the map
+    for (const CXCursor member : children(cls)) {
+      if (is_dispatchable_method(member)) {
+        check_hiding(cls, member, bases);
+      } else if (clang_getCursorKind(member) == CXCursor_FieldDecl) {
+        check_redeclared(cls, member, bases);
+      }
+    }
+  }
+
+  /// The USRs of the methods `method` overrides, directly or through the methods it overrides
+  /// (extends<> has a body() of its own between two blocks' bodies), and of the templates'
+  /// members they were instantiated from.
+  static void add_overridden(CXCursor method, std::set<std::string>& result, int depth = 0) {
+    CXCursor* overridden = nullptr;
+    unsigned count = 0;
+    clang_getOverriddenCursors(method, &overridden, &count);
+    for (unsigned i = 0; i < count; ++i) {
+      if (!result.insert(usr(overridden[i])).second || depth > 32) continue;
+      const CXCursor from = clang_getSpecializedCursorTemplate(overridden[i]);
+      if (!is_null(from)) result.insert(usr(from));
+      add_overridden(overridden[i], result, depth + 1);
+    }
+    clang_disposeOverriddenCursors(overridden);
+  }
+
+  void check_hiding(CXCursor cls, CXCursor method, const std::vector<CXCursor>& bases) {
+    const std::string name = spelling(method);
+    std::set<std::string> overridden;
+    add_overridden(method, overridden);
+    for (const CXCursor base : bases) {
+      std::vector<CXCursor> same_name;
+      for (const CXCursor member : children(base)) {
+        if (is_dispatchable_method(member) && spelling(member) == name) same_name.push_back(member);
+      }
+      if (same_name.empty()) continue;  // the name is declared further up, if anywhere
+      if (std::any_of(same_name.begin(), same_name.end(),
+                      [&](CXCursor m) { return overridden.count(usr(m)) != 0; })) {
+        return;
+      }
+      const auto non_virtual = std::find_if(same_name.begin(), same_name.end(),
+                                            [](CXCursor m) { return clang_CXXMethod_isVirtual(m) == 0; });
+      const std::string derived = class_name(cls) + "::" + name;
+      const std::string hidden = class_name(base) + "::" + name;
+      if (non_virtual != same_name.end()) {
+        report(method,
+               derived + " hides " + hidden + ", which is not virtual, so a call through a reference to " +
+                   class_name(base) + " runs " + hidden + " (in CODESYS every METHOD is virtual); declare " + hidden +
+                   " virtual, and " + derived + " override",
+               {note{location_of(*non_virtual), hidden + " is declared here"}});
+      } else {
+        report(method,
+               derived + " does not override " + hidden + " (their parameters differ), so it hides it, and a call "
+                   "through a reference to " + class_name(base) + " runs " + hidden + "; give " + derived +
+                   " the parameters of " + hidden + " and mark it override",
+               {note{location_of(same_name.front()), hidden + " is declared here"}});
+      }
+      return;
+    }
+  }
+
+  void check_redeclared(CXCursor cls, CXCursor field, const std::vector<CXCursor>& bases) {
+    const std::string name = spelling(field);
+    if (name.empty()) return;
+    for (const CXCursor base : bases) {
+      for (const CXCursor member : children(base)) {
+        if (clang_getCursorKind(member) != CXCursor_FieldDecl || spelling(member) != name) continue;
+        const std::string base_variable = class_name(base) + "::" + name;
+        report(field,
+               class_name(cls) + " declares " + name + ", which its base " + class_name(base) +
+                   " already declares, so the code of the two blocks uses two different variables (CODESYS rejects "
+                   "a variable that the base block declares); remove " + class_name(cls) + "::" + name +
+                   " and use " + base_variable,
+               {note{location_of(member), base_variable + " is declared here"}});
+        return;
+      }
+    }
+  }
+
+  // --- Code ---------------------------------------------------------------------------
+
+  /// The variables of a block's method, from its `args<Vars>` parameters.
+  std::vector<method_variables> variables_of(CXCursor method, CXCursor owner) {
+    std::vector<method_variables> result;
+    if (is_null(owner) || !info(owner).is_block) return result;
+    for (const CXCursor child : children(method)) {
+      if (clang_getCursorKind(child) != CXCursor_ParmDecl) continue;
+      const CXType type = clang_getCursorType(child);
+      if (!is_iecoop_class(class_of(type), "args")) continue;
+      const CXCursor vars = class_of(template_argument(type, 0));
+      if (is_null(vars)) continue;
+      method_variables entry{spelling(child), {}};
+      for (const CXCursor field : children(members_of(vars))) {
+        if (clang_getCursorKind(field) == CXCursor_FieldDecl) entry.fields.insert(spelling(field));
+      }
+      result.push_back(std::move(entry));
+    }
+    return result;
+  }
+
+  static std::string context_name(const code_context* context) {
+    if (context == nullptr) return "code outside any block";
+    std::string name = spelling(context->function) + "()";
+    if (!is_null(context->owner_class)) name = class_name(context->owner_class) + "::" + name;
+    return name;
+  }
+
+  /// The local<T, Owner> an expression writes into, if any: the expression itself, or the
+  /// variable whose element or member it is (`fb.arr[1]`, `fb.pos->x`).
+  static std::optional<std::pair<CXCursor, CXType>> written_local(CXCursor expression) {
+    for (int depth = 0; depth < 64 && !is_null(expression); ++depth) {
+      const CXType type = clang_getCursorType(expression);
+      if (is_iecoop_class(class_of(type), "local")) return std::pair{expression, type};
+      const std::vector<CXCursor> parts = children(expression);
+      switch (clang_getCursorKind(expression)) {
+        case CXCursor_UnexposedExpr:
+        case CXCursor_ParenExpr:
+          if (parts.size() != 1) return std::nullopt;
+          expression = parts.front();
+          break;
+        case CXCursor_MemberRefExpr:  // a member of a structured value: its object
+          if (parts.empty() || clang_getCursorKind(clang_getCursorReferenced(expression)) != CXCursor_FieldDecl) {
+            return std::nullopt;
+          }
+          expression = parts.front();
+          break;
+        case CXCursor_ArraySubscriptExpr:
+          if (parts.empty()) return std::nullopt;
+          expression = parts.front();
+          break;
+        case CXCursor_CallExpr: {  // an element (`[]`) or member (`->`) of the local itself
+          const CXCursor callee = clang_getCursorReferenced(expression);
+          const std::string name = spelling(callee);
+          if ((name != "operator[]" && name != "operator->") ||
+              !is_iecoop_class(clang_getCursorSemanticParent(callee), "local") ||
+              clang_Cursor_getNumArguments(expression) < 1) {
+            return std::nullopt;
+          }
+          expression = clang_Cursor_getArgument(expression, 0);
+          break;
+        }
+        default:
+          return std::nullopt;
+      }
+    }
+    return std::nullopt;
+  }
+
+  /// Check 2: a block's VAR (local<T, Owner>) written outside Owner and the blocks derived
+  /// from it. `call` is an assignment, `ref()` on a local, or `"name"_ >> target`.
+  void check_write(CXCursor call, const code_context* context) {
+    const CXCursor callee = clang_getCursorReferenced(call);
+    if (is_null(callee)) return;
+    const std::string name = spelling(callee);
+    std::optional<std::pair<CXCursor, CXType>> target;
+    std::string how;
+    if (assignment_operators.count(name) != 0) {
+      if (clang_Cursor_getNumArguments(call) < 1) return;
+      target = written_local(clang_Cursor_getArgument(call, 0));
+    } else if (name == "ref" && is_iecoop_class(clang_getCursorSemanticParent(callee), "local")) {
+      const std::vector<CXCursor> parts = children(call);
+      if (parts.empty()) return;
+      const std::vector<CXCursor> object = children(parts.front());  // the MemberRefExpr `x.ref`
+      if (object.empty()) return;                                     // this->ref(): inside local itself
+      target = written_local(object.front());
+      how = " through ref()";
+    } else if (name == "operator>>" && is_iecoop_class(clang_getCursorSemanticParent(callee), "param_name")) {
+      if (clang_Cursor_getNumArguments(call) < 2) return;
+      target = written_local(clang_Cursor_getArgument(call, 1));
+      how = " with =>";
+    }
+    if (target) check_target(*target, how, context);
+  }
+
+  /// Reports a write into `target` (an expression of type local<T, Owner>) unless the code
+  /// is Owner's or a derived block's.
+  void check_target(const std::pair<CXCursor, CXType>& target, const std::string& how, const code_context* context) {
+    const CXCursor owner = class_of(template_argument(target.second, 1));
+    if (is_null(owner)) return;
+    if (context != nullptr && !is_null(context->owner_class) && is_or_derives_from(context->owner_class, owner)) return;
+    const std::string variable = spelling(target.first);
+    const std::string block = class_name(owner);
+    report(target.first, context_name(context) + " writes " + variable + ", a VAR of " + block + "," + how +
+                              " from outside the block (CODESYS lets only " + block +
+                              " and the blocks that extend it write its VAR); write it in a method of " + block +
+                              ", or make it a VAR_INPUT (a plain member listed in VAR_INPUT)");
+  }
+
+  /// The spelling of a built-in operator expression's operator: the token after its first
+  /// operand (binary), or its first or last token (unary).
+  std::string operator_spelling(CXCursor expression) {
+    const std::vector<CXCursor> operands = children(expression);
+    if (operands.empty()) return {};
+    CXToken* tokens = nullptr;
+    unsigned count = 0;
+    clang_tokenize(unit_, clang_getCursorExtent(expression), &tokens, &count);
+    std::string result;
+    if (clang_getCursorKind(expression) == CXCursor_UnaryOperator) {
+      if (count > 0) {
+        result = text(clang_getTokenSpelling(unit_, tokens[0]));
+        if (result != "++" && result != "--") result = text(clang_getTokenSpelling(unit_, tokens[count - 1]));
+      }
+    } else {
+      unsigned operand_end = 0;
+      clang_getExpansionLocation(clang_getRangeEnd(clang_getCursorExtent(operands.front())), nullptr, nullptr, nullptr,
+                                 &operand_end);
+      for (unsigned i = 0; i < count; ++i) {
+        unsigned offset = 0;
+        clang_getExpansionLocation(clang_getTokenLocation(unit_, tokens[i]), nullptr, nullptr, nullptr, &offset);
+        if (offset >= operand_end) {
+          result = text(clang_getTokenSpelling(unit_, tokens[i]));
+          break;
+        }
+      }
+    }
+    clang_disposeTokens(unit_, tokens, count);
+    return result;
+  }
+
+  /// Check 2 for C++'s built-in assignments (`=`, `+=`, `++`...), which write a plain
+  /// member of a structured local (`fb.pos->i = 1` with an `int i`).
+  void check_builtin_write(CXCursor expression, const code_context* context) {
+    const CXCursorKind kind = clang_getCursorKind(expression);
+    const std::vector<CXCursor> operands = children(expression);
+    if (operands.empty()) return;
+    const auto target = written_local(operands.front());
+    if (!target) return;
+    if (kind != CXCursor_CompoundAssignOperator) {
+      const std::string op = operator_spelling(expression);
+      if (op != "=" && op != "++" && op != "--") return;
+    }
+    check_target(*target, "", context);
+  }
+
+  /// Check 3: `x` alone in a method whose variables include an x means the method's x in ST.
+  void check_shadowed(CXCursor reference, const code_context* context) {
+    if (context == nullptr || context->vars.empty()) return;
+    if (!children(reference).empty()) return;  // `this->x`, `in.x`, `other.x`: qualified
+    const CXCursor field = clang_getCursorReferenced(reference);
+    if (clang_getCursorKind(field) != CXCursor_FieldDecl) return;
+    const std::string name = spelling(field);
+    for (const method_variables& vars : context->vars) {
+      if (vars.fields.count(name) == 0) continue;
+      const std::string method = class_name(context->owner_class) + "::" + spelling(context->function);
+      report(reference, "in " + method + ", " + name + " is the block's variable, but " + spelling(context->function) +
+                            " declares its own " + name + ", and ST's " + name + " means that one here; write " +
+                            vars.parameter + "." + name + " for the method's variable, or this->" + name +
+                            " for the block's (THIS^." + name + ")");
+      return;
+    }
+  }
+
+  // --- The walk -----------------------------------------------------------------------
+
+  void walk(CXCursor c) {
+    const CXCursorKind kind = clang_getCursorKind(c);
+    if (clang_isDeclaration(kind) != 0 && !is_user_location(clang_getCursorLocation(c))) return;
+    if (is_class_kind(kind) && clang_isCursorDefinition(c) != 0) check_block_class(c);
+    if (is_function_kind(kind)) {
+      if (clang_isCursorDefinition(c) == 0) return;  // a declaration only: nothing to check
+      CXCursor owner = clang_getCursorSemanticParent(c);
+      if (!is_class_kind(clang_getCursorKind(owner))) owner = clang_getNullCursor();
+      contexts_.push_back(code_context{c, owner, variables_of(c, owner)});
+      for (const CXCursor child : children(c)) walk(child);
+      contexts_.pop_back();
+      return;
+    }
+    const code_context* context = contexts_.empty() ? nullptr : &contexts_.back();
+    if (kind == CXCursor_CallExpr) check_write(c, context);
+    if (kind == CXCursor_BinaryOperator || kind == CXCursor_CompoundAssignOperator || kind == CXCursor_UnaryOperator) {
+      check_builtin_write(c, context);
+    }
+    if (kind == CXCursor_MemberRefExpr) check_shadowed(c, context);
+    for (const CXCursor child : children(c)) walk(child);
+  }
+
+  CXTranslationUnit unit_;
+  std::string library_dir_;
+  std::map<CXFile, bool> user_files_;
+  std::map<std::string, class_info> classes_;
+  std::vector<code_context> contexts_;
+  std::vector<finding> findings_;
+};
+
+}  // namespace
+
+std::vector<finding> check_translation_unit(CXTranslationUnit unit) { return checker(unit).run(); }
+
+}  // namespace iecoop_check
