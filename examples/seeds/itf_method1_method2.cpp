@@ -49,11 +49,11 @@ struct POU_Im : function_block<POU_Im, implements<ITF1>> {
 
   void body() {}
 
-  // METHOD Method1 : BOOL          (code ours)
+  // METHOD Method1 : BOOL          (code ours; its input bOn shadows the block's bOn)
   BOOL Method1(args<Method1_vars> in) override {
-    const BOOL bWasOn = bOn;  // Method1 := bOn;   (the previous state)
-    bOn = in.bOn;             // bOn := bOn_in;
-    return bWasOn;
+    BOOL Method1 = this->bOn;  // Method1 := THIS^.bOn;   (the previous state)
+    this->bOn = in.bOn;        // THIS^.bOn := bOn;       (the method's input)
+    return Method1;
   }
   // METHOD Method2 : INT           (code ours)
   INT Method2(args<Method2_vars> in) override {

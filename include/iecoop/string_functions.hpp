@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/string.hpp>
 #include <iecoop/types.hpp>
 
@@ -42,7 +43,15 @@ struct string_arg<C[M]> {
   static constexpr std::size_t capacity = M - 1;
 };
 
-/// A STRING/WSTRING of any capacity, or a string literal.
+/// A variable wrapper of a STRING/WSTRING that holds its string (a block's var<STRING>, a
+/// retain<STRING>, an in-out...): that string. (A property's Get returns a copy, which a view
+/// must not outlive: pass `fb.p.get()`, which lives as long as the call.)
+template <class W>
+  requires(value_wrapper<W> && is_iec_string<unwrapped_t<W>>::value &&
+           std::is_lvalue_reference_v<decltype(std::declval<const W&>().get())>)
+struct string_arg<W> : string_arg<unwrapped_t<W>> {};
+
+/// A STRING/WSTRING of any capacity (or a variable of one), or a string literal.
 template <class S>
 concept string_argument = requires { typename string_arg<std::remove_cvref_t<S>>::char_type; };
 
@@ -61,20 +70,26 @@ constexpr std::basic_string_view<char_of<S>> view_of(const S& s) noexcept {
     std::size_t n = 0;
     while (n < capacity_of<S> && s[n] != char_of<S>{}) ++n;
     return {s, n};
+  } else if constexpr (value_wrapper<S>) {
+    return value_of(s).view();
   } else {
     return s.view();
   }
 }
 
-/// A length or position argument: any IEC integer, or a C++ integer.
+/// A length or position argument: any IEC integer (a variable, a variable wrapper such as a
+/// var<INT>, or an intermediate result such as `iAt - 1`), or a C++ integer.
 template <class T>
-concept position_argument = AnyInt<T> || cpp_integer<T>;
+concept position_argument = AnyInt<T> || cpp_integer<T> || (Intermediate<T> && AnyInt<typename T::nominal_type>) ||
+                            (value_wrapper<T> && AnyInt<unwrapped_t<T>>);
 
 /// The value of a length or position; unsigned values beyond the int64 range saturate
 /// (they are beyond any string anyway).
 template <position_argument T>
-constexpr std::int64_t as_i64(T v) noexcept {
-  if constexpr (AnyInt<T>) {
+constexpr std::int64_t as_i64(const T& v) noexcept {
+  if constexpr (value_wrapper<T>) {
+    return as_i64(v.get());
+  } else if constexpr (AnyInt<T> || Intermediate<T>) {
     return as_i64(v.value());
   } else if constexpr (std::is_unsigned_v<T>) {
     constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
@@ -117,7 +132,7 @@ template <detail::string_argument S>
 
 /// LEFT(IN, L): the first L characters; all of IN if L >= LEN(IN), '' if L <= 0.
 template <detail::string_argument S, detail::position_argument L>
-[[nodiscard]] constexpr detail::result_string<S> LEFT(const S& in, L l) noexcept {
+[[nodiscard]] constexpr detail::result_string<S> LEFT(const S& in, const L& l) noexcept {
   const auto v = detail::view_of(in);
   const std::int64_t n = detail::as_i64(l);
   if (n <= 0) return {};
@@ -126,7 +141,7 @@ template <detail::string_argument S, detail::position_argument L>
 
 /// RIGHT(IN, L): the last L characters; all of IN if L >= LEN(IN), '' if L <= 0.
 template <detail::string_argument S, detail::position_argument L>
-[[nodiscard]] constexpr detail::result_string<S> RIGHT(const S& in, L l) noexcept {
+[[nodiscard]] constexpr detail::result_string<S> RIGHT(const S& in, const L& l) noexcept {
   const auto v = detail::view_of(in);
   const std::int64_t n = detail::as_i64(l);
   if (n <= 0) return {};
@@ -137,7 +152,7 @@ template <detail::string_argument S, detail::position_argument L>
 /// MID(IN, L, P): L characters starting at position P (1 = first character); fewer if IN
 /// ends first; '' if P < 1, P > LEN(IN) or L <= 0.
 template <detail::string_argument S, detail::position_argument L, detail::position_argument P>
-[[nodiscard]] constexpr detail::result_string<S> MID(const S& in, L l, P p) noexcept {
+[[nodiscard]] constexpr detail::result_string<S> MID(const S& in, const L& l, const P& p) noexcept {
   const auto v = detail::view_of(in);
   const std::int64_t n = detail::as_i64(l);
   const std::int64_t pos = detail::as_i64(p);
@@ -158,7 +173,7 @@ template <detail::string_argument S1, detail::string_argument... Sn>
 /// STR1").
 template <detail::string_argument S1, detail::string_argument S2, detail::position_argument P>
   requires detail::same_char<S1, S2>
-[[nodiscard]] constexpr auto INSERT(const S1& in1, const S2& in2, P p) noexcept {
+[[nodiscard]] constexpr auto INSERT(const S1& in1, const S2& in2, const P& p) noexcept {
   constexpr std::size_t cap = detail::capacity_of<S1> + detail::capacity_of<S2>;
   using C = detail::char_of<S1>;
   const auto a = detail::view_of(in1);
@@ -171,7 +186,7 @@ template <detail::string_argument S1, detail::string_argument S2, detail::positi
 /// DELETE(IN, L, P): IN without the L characters starting at position P (fewer if IN ends
 /// first); IN unchanged if L <= 0, P < 1 or P > LEN(IN).
 template <detail::string_argument S, detail::position_argument L, detail::position_argument P>
-[[nodiscard]] constexpr detail::result_string<S> DELETE(const S& in, L l, P p) noexcept {
+[[nodiscard]] constexpr detail::result_string<S> DELETE(const S& in, const L& l, const P& p) noexcept {
   using C = detail::char_of<S>;
   const auto v = detail::view_of(in);
   const std::int64_t n = detail::as_i64(l);
@@ -188,7 +203,7 @@ template <detail::string_argument S, detail::position_argument L, detail::positi
 template <detail::string_argument S1, detail::string_argument S2, detail::position_argument L,
           detail::position_argument P>
   requires detail::same_char<S1, S2>
-[[nodiscard]] constexpr auto REPLACE(const S1& in1, const S2& in2, L l, P p) noexcept {
+[[nodiscard]] constexpr auto REPLACE(const S1& in1, const S2& in2, const L& l, const P& p) noexcept {
   constexpr std::size_t cap = detail::capacity_of<S1> + detail::capacity_of<S2>;
   using C = detail::char_of<S1>;
   const auto a = detail::view_of(in1);

@@ -307,6 +307,24 @@ TEST_SUITE("ST meaning: variables") {
     CHECK(panel.ipLamp->Count() == 4);
   }
 
+  TEST_CASE("the string functions take STRING variables and positions in any variable form") {
+    struct FB_Text : function_block<FB_Text> {
+      var<STRING<20>> sLine{"Station A: ready"};
+      var<INT> iAt;
+      var<STRING<20>> sHead;
+      void body() {
+        iAt = FIND(sLine, ":");           // iAt := FIND(sLine, ':');
+        sHead = LEFT(sLine, iAt - 1);     // sHead := LEFT(sLine, iAt - 1);
+      }
+    };
+    FB_Text fb;
+    fb();
+    CHECK(fb.iAt == 10);
+    CHECK(fb.sHead == "Station A");
+    CHECK(LEN(fb.sLine) == 16);
+    CHECK(MID(fb.sLine, 2, fb.iAt - 1) == "A:");  // MID(sLine, 2, iAt - 1): length, then position
+  }
+
   TEST_CASE("TIME(system_time) is ST's TIME(); TIME() is T#0ms") {
     cycle_clock::set("LTIME#1m2s3ms4us"_iec);
     const TIME now = TIME(system_time);  // tNow := TIME();
