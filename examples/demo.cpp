@@ -80,7 +80,7 @@ struct GVL : global_variables<GVL> {
 // VAR_GLOBAL PERSISTENT               (GVL_Config: set at commissioning, kept over resets and downloads)
 struct GVL_Config : global_variables<GVL_Config> {
   persistent<E_Motor> eMotor{E_Motor::VFD};  // eMotor : E_Motor := E_Motor.VFD;   (* the drive fitted *)
-  persistent<WORD> wBatchSize{WORD(8)};      // wBatchSize : WORD := 8;            (* parts per box *)
+  persistent<WORD> wBatchSize{8};            // wBatchSize : WORD := 8;            (* parts per box *)
   // END_VAR
 };
 
@@ -106,8 +106,6 @@ struct FB_DolMotor : function_block<FB_DolMotor, implements<I_Motor>> {
   BOOL bContactor;  // VAR_OUTPUT bContactor : BOOL; END_VAR
   using VAR_OUTPUT = pins<&FB_DolMotor::bContactor>;
 
-  void body() {}
-
   // METHOD Run : BOOL
   BOOL Run(args<Run_vars> in) override {
     bContactor = in.bRun;  // bContactor := bRun;   (* rSetpoint means nothing to it *)
@@ -129,12 +127,10 @@ struct FB_VfdMotor : function_block<FB_VfdMotor, implements<I_Motor>> {
   using VAR_INPUT = pins<&FB_VfdMotor::tRamp>;
   using VAR_OUTPUT = pins<&FB_VfdMotor::bEnable, &FB_VfdMotor::iSpeedRef>;
 
-  void body() {}
-
   // METHOD Run : BOOL
   // VAR tNow : TIME; rStep, rTarget : REAL; END_VAR
   BOOL Run(args<Run_vars> in) override {
-    const TIME tNow = cycle_clock::now_as<TIME>();                     // tNow := TIME();
+    const TIME tNow = TIME(system_time);                               // tNow := TIME();
     const REAL rStep = 100.0f * TIME_TO_REAL(tNow - tLast)             // rStep := 100.0 * TIME_TO_REAL(tNow - tLast)
                        / TIME_TO_REAL(tRamp);                          //          / TIME_TO_REAL(tRamp);
     tLast = tNow;                                                      // tLast := tNow;
@@ -227,7 +223,7 @@ struct IO_PRG : program<IO_PRG> {
     GVL& gvl = GVL::instance();
     const GVL_Config& config = GVL_Config::instance();
 
-    switch (config.eMotor.get()) {                      // CASE GVL_Config.eMotor OF   (* the drive fitted *)
+    switch (config.eMotor) {                            // CASE GVL_Config.eMotor OF   (* the drive fitted *)
       case E_Motor::DOL: ipMotor = fbDol; break;        // E_Motor.DOL: ipMotor := fbDol;
       case E_Motor::VFD: ipMotor = fbVfd; break;        // E_Motor.VFD: ipMotor := fbVfd;
     }                                                   // END_CASE
@@ -244,7 +240,7 @@ struct IO_PRG : program<IO_PRG> {
                "wBatchSize"_ = config.wBatchSize,       //            wBatchSize := GVL_Config.wBatchSize,
                "ipMotor"_ = ipMotor);                   //            ipMotor := ipMotor);
 
-    switch (config.eMotor.get()) {                      // CASE GVL_Config.eMotor OF   (* each drive has its own wiring *)
+    switch (config.eMotor) {                            // CASE GVL_Config.eMotor OF   (* each drive has its own wiring *)
       case E_Motor::DOL:                                // E_Motor.DOL:
         io.qxMotor = fbDol.bContactor;                  //     GVL_IO.qxMotor := fbDol.bContactor;
         io.qwSpeedRef = 0;                              //     GVL_IO.qwSpeedRef := 0;
@@ -447,9 +443,9 @@ struct OPERATOR_SIM : program<OPERATOR_SIM> {
     tpStart("IN"_ = bStart, "PT"_ = "T#200ms"_iec);
     tpStop("IN"_ = bStop, "PT"_ = "T#200ms"_iec);
     tpReset("IN"_ = bReset, "PT"_ = "T#200ms"_iec);
-    field.set<"%IX0.0">(tpStart.Q.get());
+    field.set<"%IX0.0">(tpStart.Q);
     field.set<"%IX0.1">(!tpStop.Q);  // normally closed
-    field.set<"%IX0.3">(tpReset.Q.get());
+    field.set<"%IX0.3">(tpReset.Q);
     field.set<"%IW1">(iSpeed);
   }
 };
@@ -697,7 +693,7 @@ int run(const options& opt) {
   fmt::print("  outputs  %QX0.0 {}  %QX0.1 jam lamp  %QW1 speed reference (16#4000 = 100 %)\n",
              dol ? "contactor" : "drive enable");
   fmt::print("  drive    {}, batches of {} parts, jam after T#2s at the eye\n",
-             dol ? "DOL (FB_DolMotor: on or off, 100 %)" : "VFD (FB_VfdMotor: ramp T#1s, 20..100 %)", config.wBatchSize.get());
+             dol ? "DOL (FB_DolMotor: on or off, 100 %)" : "VFD (FB_VfdMotor: ramp T#1s, 20..100 %)", config.wBatchSize);
   fmt::print("  tasks    Sim 1 ms (operator, belt, trace)  Fast 1 ms: IO_PRG  Slow 20 ms: SUPERVISION_PRG\n");
   if (opt.retain_file != nullptr) {
     const SUPERVISION_PRG& s = plc.get<SUPERVISION_PRG>();
@@ -748,7 +744,7 @@ int run(const options& opt) {
   }
   const SUPERVISION_PRG& s = plc.get<SUPERVISION_PRG>();
   fmt::print("\nmachine: parts {}, batches {} (of {}), jams {}, rejected {}, in the open batch {}\n", s.udiParts, s.udiBatches,
-             config.wBatchSize.get(), s.uiJams, s.udiRejected, plc.get<GVL>().wParts);
+             config.wBatchSize, s.uiJams, s.udiRejected, plc.get<GVL>().wParts);
   fmt::print("time:    {:.3f} s of {} time in {:.3f} s of wall-clock time", seconds(plc.now()),
              opt.realtime ? "machine" : "simulated", wall);
   if (!opt.realtime && wall > 0.0) fmt::print(" ({:.0f} x faster)", seconds(plc.now()) / wall);

@@ -53,8 +53,6 @@ struct FB_StarDelta : function_block<FB_StarDelta, implements<I_Motor>> {
   BOOL bDelta;   // bDelta : BOOL;
   // END_VAR
 
-  void body() {}
-
   void Run(args<Run_vars> in) override {
     tStar("IN"_ = in.bRun, "PT"_ = "T#50ms"_iec);  // tStar(IN := bRun, PT := T#50ms);
     bStar = in.bRun && !tStar.Q;                    // bStar := bRun AND NOT tStar.Q;

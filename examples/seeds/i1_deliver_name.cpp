@@ -21,13 +21,11 @@ struct I1 : interface_base<I1> {
 
 // FUNCTION_BLOCK A IMPLEMENTS I1
 struct A : function_block<A, implements<I1>> {
-  void body() {}
   STRING<> GetName() override { return "A"; }  // GetName := 'A';   (ours)
 };
 
 // FUNCTION_BLOCK B IMPLEMENTS I1
 struct B : function_block<B, implements<I1>> {
-  void body() {}
   STRING<> GetName() override { return "B"; }  // GetName := 'B';   (ours)
 };
 

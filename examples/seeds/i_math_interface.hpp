@@ -50,8 +50,6 @@ struct FB_MathMen : function_block<FB_MathMen, implements<I_Math>> {
   // VAR rMem : REAL; END_VAR
   var<REAL> rMem;
 
-  void body() {}
-
   REAL M_Add(args<M_Add_vars> in) override {
     rMem = rMem + in.rVal;  // rMem := rMem + rVal;
     return rMem;            // M_Add := rMem;
@@ -68,8 +66,6 @@ struct FB_MathMen : function_block<FB_MathMen, implements<I_Math>> {
 struct FB_MethErase : function_block<FB_MethErase, implements<I_Math>> {
   // VAR rMem : REAL; END_VAR
   var<REAL> rMem;
-
-  void body() {}
 
   REAL M_Add(args<M_Add_vars> in) override {
     const REAL rResult = rMem + in.rVal;  // M_Add := rMem + rVal;

@@ -47,8 +47,6 @@ struct POU_Im : function_block<POU_Im, implements<ITF1>> {
   var<BOOL> bOn;
   var<INT> iTotal;
 
-  void body() {}
-
   // METHOD Method1 : BOOL          (code ours; its input bOn shadows the block's bOn)
   BOOL Method1(args<Method1_vars> in) override {
     BOOL Method1 = this->bOn;  // Method1 := THIS^.bOn;   (the previous state)

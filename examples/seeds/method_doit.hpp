@@ -21,8 +21,6 @@ struct FB_DoIt : function_block<FB_DoIt> {
   // END_VAR
   var<STRING<12>> sLastText;
 
-  void body() {}
-
   // METHOD PUBLIC DoIt : BOOL
   // VAR_INPUT
   //     iInput_1 : DWORD;

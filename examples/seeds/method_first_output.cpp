@@ -57,8 +57,6 @@ struct FB_DoIt : function_block<FB_DoIt> {
   var<UDINT> iCalls;  // iCalls : UDINT;
   // END_VAR
 
-  void body() {}
-
   // METHOD PUBLIC DoIt                 (no return type: DoIt's value is dwSum)
   // VAR_INPUT
   //     iInput_1 : DWORD;

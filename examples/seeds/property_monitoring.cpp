@@ -171,7 +171,6 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
       INT iA;
       INT iGets;
       INT prop_iA_variable_monitor;
-      void body() {}
     };
     static_assert(sizeof(FB_A) == sizeof(FB_A_data));
   }

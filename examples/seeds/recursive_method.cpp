@@ -16,7 +16,6 @@ using namespace iecoop;
 
 // FUNCTION_BLOCK FB_Math
 struct FB_Math : function_block<FB_Math> {
-  void body() {}
 
   // {attribute 'estimated-stack-usage' := '99'}
   // METHOD Fact : DINT

@@ -35,8 +35,6 @@ struct FB_X : function_block<FB_X> {
   var<INT> x;  // x : INT;      (the block's x)
   // END_VAR
 
-  void body() {}
-
   // METHOD SetX
   // VAR_INPUT
   //     x : INT;               (the method's input x)

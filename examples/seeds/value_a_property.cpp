@@ -55,7 +55,6 @@ TEST_SUITE("seed: fb_A.Value_A (Get reads iA, Set writes iB)") {
     struct fb_A_data : function_block<fb_A_data> {
       INT iA;
       INT iB;
-      void body() {}
     };
     static_assert(sizeof(fb_A) == sizeof(fb_A_data));
   }

@@ -409,7 +409,7 @@ using default_process_image = process_image<>;
  * type are the same variable (the same bytes); copying a block copies no I/O.
  */
 template <class T, detail::fixed_string Address, class Image = default_process_image>
-class located {
+class located : public detail::condition_conversion<located<T, Address, Image>, T> {
  public:
   using value_type = T;
   using image_type = Image;
@@ -439,12 +439,6 @@ class located {
     }
   }
   operator T() const noexcept { return get(); }  // NOLINT: reads as the variable
-  /// `IF bStart THEN`, `bool b = bStart;` (for BOOL).
-  operator bool() const noexcept  // NOLINT: a BOOL is a condition
-    requires std::is_same_v<T, BOOL>
-  {
-    return static_cast<bool>(get());
-  }
 
   /// Writes the value to the process image (%Q and %M only). A non-template operand, so that
   /// constants convert as in any assignment (`iCount = 5;`).

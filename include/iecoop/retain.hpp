@@ -183,7 +183,7 @@ inline void unlink_retained(retained_node& node) noexcept {
 
 /// The common part of retain<T> and persistent<T> (Derived is one of them).
 template <class Derived, class T, retain_kind Kind>
-class retained_variable {
+class retained_variable : public condition_conversion<retained_variable<Derived, T, Kind>, T> {
   static_assert(std::is_trivially_copyable_v<T>,
                 "iecoop: a RETAIN or PERSISTENT variable must be trivially copyable, as it is saved and restored "
                 "as bytes; use IEC elementary types, STRING<n>, std::array and STRUCTs of them");
@@ -247,17 +247,6 @@ class retained_variable {
     requires requires(T& v) { v[std::forward<I>(index)]; }
   {
     return value_[std::forward<I>(index)];
-  }
-  /// A BOOL variable is a condition like a BOOL (`if (bFlag)`, `bool b = bFlag;`).
-  constexpr operator bool() const noexcept  // NOLINT
-    requires std::is_same_v<T, BOOL>
-  {
-    return static_cast<bool>(value_);
-  }
-  explicit constexpr operator bool() const
-    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
-  {
-    return static_cast<bool>(value_);
   }
 
  private:

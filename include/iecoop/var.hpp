@@ -86,7 +86,7 @@ namespace detail {
 /// What a block's variable (local<>, read_only<>) is to its readers: its value, with the
 /// operations of its type. Writing is up to the derived class.
 template <class T>
-class variable_value {
+class variable_value : public condition_conversion<variable_value<T>, T> {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
@@ -101,18 +101,6 @@ class variable_value {
     requires requires(const T& v) { v[std::forward<I>(index)]; }
   {
     return value_[std::forward<I>(index)];
-  }
-  /// A BOOL variable is a condition like a BOOL (`if (bFlag)`, `bool b = bFlag;`).
-  constexpr operator bool() const noexcept  // NOLINT
-    requires std::is_same_v<T, BOOL>
-  {
-    return static_cast<bool>(value_);
-  }
-  /// `if (ip)` for an interface variable.
-  explicit constexpr operator bool() const
-    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
-  {
-    return static_cast<bool>(value_);
   }
 
  protected:
@@ -250,7 +238,7 @@ class read_only : public detail::variable_value<T> {
  * the block). `in_out<const T>` is VAR_IN_OUT CONSTANT.
  */
 template <class T>
-class in_out {
+class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_t<T>> {
  public:
   using value_type = std::remove_const_t<T>;
   using iecoop_value_wrapper = void;
@@ -283,17 +271,6 @@ class in_out {
     return *target_;
   }
   constexpr operator T&() const { return get(); }  // NOLINT: reads as the variable
-  /// A BOOL in-out is a condition like a BOOL.
-  constexpr operator bool() const  // NOLINT
-    requires std::is_same_v<value_type, BOOL>
-  {
-    return static_cast<bool>(get());
-  }
-  explicit constexpr operator bool() const
-    requires(!std::is_same_v<value_type, BOOL> && std::is_constructible_v<bool, const value_type&>)
-  {
-    return static_cast<bool>(get());
-  }
   /// `r->x` for a STRUCT, `ip->M()` for an interface variable.
   constexpr decltype(auto) operator->() const { return detail::arrow_of(get()); }
   /// An element of an ARRAY (`a[i]`).
@@ -361,7 +338,7 @@ class in_out {
  * that hands its variables on (`SUPER::M(in)`) still delivers to its own caller.
  */
 template <class T>
-class output {
+class output : public detail::condition_conversion<output<T>, T> {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;
@@ -404,17 +381,6 @@ class output {
   constexpr T& ref() noexcept { return value_; }
   constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }
   constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(value_); }
-  /// A BOOL output is a condition like a BOOL.
-  constexpr operator bool() const noexcept  // NOLINT
-    requires std::is_same_v<T, BOOL>
-  {
-    return static_cast<bool>(value_);
-  }
-  explicit constexpr operator bool() const
-    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
-  {
-    return static_cast<bool>(value_);
-  }
 
   /// Makes the call copy this output to `target` when it ends (ST's `=>`), converting as
   /// IEC allows; the target may be a variable, a block's var<> or an in-out.
@@ -439,7 +405,7 @@ class output {
  * (THIS^.x) — with no C++ local shadowing a member.
  */
 template <class T>
-class temp {
+class temp : public detail::condition_conversion<temp<T>, T> {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;
@@ -479,16 +445,6 @@ class temp {
     requires requires(T& v) { v[std::forward<I>(index)]; }
   {
     return value_[std::forward<I>(index)];
-  }
-  constexpr operator bool() const noexcept  // NOLINT: a BOOL is a condition
-    requires std::is_same_v<T, BOOL>
-  {
-    return static_cast<bool>(value_);
-  }
-  explicit constexpr operator bool() const
-    requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
-  {
-    return static_cast<bool>(value_);
   }
 
  private:

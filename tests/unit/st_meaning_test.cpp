@@ -325,6 +325,32 @@ TEST_SUITE("ST meaning: variables") {
     CHECK(MID(fb.sLine, 2, fb.iAt - 1) == "A:");  // MID(sLine, 2, iAt - 1): length, then position
   }
 
+  TEST_CASE("CASE on a VAR or RETAIN of an enumeration, IF on a VAR BOOL") {
+    enum class E_Mode { Off, Manual, Auto };
+    struct FB_Mode : function_block<FB_Mode> {
+      var<E_Mode> eMode{E_Mode::Manual};
+      retain<E_Mode> eKept{E_Mode::Auto};
+      var<BOOL> bOn;
+      INT iSeen;
+      void body() {
+        switch (eMode) {  // CASE eMode OF
+          case E_Mode::Manual: iSeen = 1; break;
+          default: iSeen = 0; break;
+        }
+        switch (eKept) {
+          case E_Mode::Auto: iSeen = iSeen + 10; break;
+          default: break;
+        }
+        if (~bOn) bOn = TRUE;  // IF NOT bOn THEN bOn := TRUE; END_IF
+      }
+    };
+    FB_Mode fb;
+    fb();
+    CHECK(fb.iSeen == 11);
+    const bool on = fb.bOn;
+    CHECK(on);
+  }
+
   TEST_CASE("TIME(system_time) is ST's TIME(); TIME() is T#0ms") {
     cycle_clock::set("LTIME#1m2s3ms4us"_iec);
     const TIME now = TIME(system_time);  // tNow := TIME();

@@ -113,6 +113,25 @@ constexpr void reject_value() {
   }
 }
 
+/// A wrapper of T as a condition (`if (bFlag)`): implicitly for a BOOL (`bool b = bFlag;`, as
+/// a BOOL itself converts), explicitly for other types that test as bool (an interface
+/// variable), and not at all otherwise. A base class rather than constrained members: g++ 12
+/// counts a constrained-out conversion function when it looks for the one conversion of a
+/// `switch` condition (a wrapper of an enum would be ambiguous).
+template <class Derived, class T>
+struct condition_conversion {};
+template <class Derived>
+struct condition_conversion<Derived, BOOL> {
+  constexpr operator bool() const {  // NOLINT: a BOOL is a condition
+    return static_cast<bool>(static_cast<const Derived&>(*this).get());
+  }
+};
+template <class Derived, class T>
+  requires(!std::is_same_v<T, BOOL> && std::is_constructible_v<bool, const T&>)
+struct condition_conversion<Derived, T> {
+  explicit constexpr operator bool() const { return static_cast<bool>(static_cast<const Derived&>(*this).get()); }
+};
+
 /// What `w->m` reaches through a wrapper of T: T's own `->` where it has one (an interface
 /// variable, `ip->M()`), else T's members (`pos->x` for a STRUCT).
 template <class T>
