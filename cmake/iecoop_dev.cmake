@@ -1,10 +1,13 @@
 # Build settings for iecoop's own targets (tests, examples, benchmarks). None of this
 # reaches users of iecoop::iecoop: the library target itself carries no flags.
 
+# iecoop_warnings: our strict warnings. IECOOP_WARNING_FLAGS holds the same flags (GCC and Clang,
+# without -Werror) for compilers that scripts run: the docs' snippets (cmake/doc_snippets.cmake).
 add_library(iecoop_warnings INTERFACE)
+set(IECOOP_WARNING_FLAGS "")
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
-  target_compile_options(iecoop_warnings INTERFACE -Wall -Wextra -Wpedantic
-    -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast
+  set(IECOOP_WARNING_FLAGS -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast)
+  target_compile_options(iecoop_warnings INTERFACE ${IECOOP_WARNING_FLAGS}
     $<$<BOOL:${IECOOP_WERROR}>:-Werror>)
 elseif(MSVC)
   target_compile_options(iecoop_warnings INTERFACE /W4 /permissive- $<$<BOOL:${IECOOP_WERROR}>:/WX>)
