@@ -41,6 +41,7 @@
 #include <iecoop/detail/type_hash.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/var.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
@@ -183,7 +184,7 @@ inline void unlink_retained(retained_node& node) noexcept {
 
 /// The common part of retain<T> and persistent<T> (Derived is one of them).
 template <class Derived, class T, retain_kind Kind>
-class retained_variable : public condition_conversion<retained_variable<Derived, T, Kind>, T> {
+class retained_variable : public assignable_variable<Derived, T> {
   static_assert(std::is_trivially_copyable_v<T>,
                 "iecoop: a RETAIN or PERSISTENT variable must be trivially copyable, as it is saved and restored "
                 "as bytes; use IEC elementary types, STRING<n>, std::array and STRUCTs of them");
@@ -191,73 +192,33 @@ class retained_variable : public condition_conversion<retained_variable<Derived,
                 "iecoop: a RETAIN or PERSISTENT array is written retain<std::array<T, N>>, not retain<T[N]>");
   static_assert(!std::is_const_v<T> && !std::is_volatile_v<T>,
                 "iecoop: a RETAIN or PERSISTENT variable is written when its value is restored; drop const or volatile");
+  using base = assignable_variable<Derived, T>;
 
  public:
-  using value_type = T;
-  using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
-
   retained_variable() noexcept(std::is_nothrow_default_constructible_v<T>) { link(); }
   /// The declaration's initial value: `retain<INT> iCount{5};` (ST: `iCount : INT := 5;`).
-  explicit retained_variable(const T& initial) noexcept : value_(initial) { link(); }
+  explicit retained_variable(const T& initial) noexcept : base(initial) { link(); }
   /// A copy is a variable of its own, in the list too.
-  retained_variable(const retained_variable& other) noexcept : value_(other.value_) { link(); }
+  retained_variable(const retained_variable& other) noexcept : base(other.get()) { link(); }
   /// Copies the value only (ST's `a := b`).
   retained_variable& operator=(const retained_variable& other) noexcept {
-    value_ = other.value_;
+    this->assign(other.get());
     return *this;
   }
   ~retained_variable() { unlink_retained(node_); }
 
-  /// Assigns the value (a non-template operand, so that constants convert as in any
-  /// assignment: `iCount = 5;`). Compound assignments (`iCount += 1;`) are those of every
-  /// variable wrapper (detail/value_operators.hpp).
-  Derived& operator=(const T& value) noexcept {
-    detail::copy_value(value_, value);
-    return self();
-  }
-  /// From another variable wrapper whose value converts implicitly.
-  template <class V>
-    requires detail::converts_through_wrapper<T, V>
-  Derived& operator=(const V& other) {
-    detail::assign_value(value_, detail::value_of(other));
-    return self();
-  }
-  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
-  template <class V>
-    requires detail::rejected_value<T, V>
-  constexpr void operator=(const V&) {
-    detail::reject_value<T, V>();
-  }
-
-  constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
-  [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
-  /// Write access to members of a structured variable: `stRecipe.ref().rSpeed = 1.5;`
-  [[nodiscard]] constexpr T& ref() noexcept { return value_; }
-  constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }
-  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(value_); }
-  /// An element of an ARRAY (`a[i]`).
-  template <class I>
-  constexpr decltype(auto) operator[](I&& index) const
-    requires requires(const T& v) { v[std::forward<I>(index)]; }
-  {
-    return value_[std::forward<I>(index)];
-  }
-  template <class I>
-  constexpr decltype(auto) operator[](I&& index)
-    requires requires(T& v) { v[std::forward<I>(index)]; }
-  {
-    return value_[std::forward<I>(index)];
-  }
+  /// Assigning a value (`iCount = 5;`, with ST's conversions), reading, `->`, `[]` and
+  /// `ref()` (write access to members: `stRecipe.ref().rSpeed = 1.5;`) are those of every
+  /// variable (detail::assignable_variable); compound assignments (`iCount += 1;`) those of
+  /// every variable wrapper (detail/value_operators.hpp).
+  using base::operator=;
 
  private:
   void link() noexcept {
-    node_.value = &value_;
+    node_.value = &this->storage();
     node_.type = &retained_type_of<T, Kind>;
     link_retained(node_);
   }
-  Derived& self() noexcept { return static_cast<Derived&>(*this); }
-
-  T value_{};
   retained_node node_;
 };
 

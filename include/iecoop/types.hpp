@@ -563,63 +563,6 @@ class integer {
   friend constexpr BOOL operator>=(integer a, integer b) noexcept { return BOOL(a.value_ >= b.value_); }
   friend constexpr std::strong_ordering operator<=>(integer a, integer b) noexcept { return a.value_ <=> b.value_; }
 
-  // Comparison with any C++ integer compares the mathematical values (no conversion, so
-  // INT(-1) < 4000000000u is TRUE).
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator==(integer a, T b) noexcept {
-    return BOOL(std::cmp_equal(a.value_, b));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator==(T a, integer b) noexcept {
-    return BOOL(std::cmp_equal(a, b.value_));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator!=(integer a, T b) noexcept {
-    return BOOL(std::cmp_not_equal(a.value_, b));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator!=(T a, integer b) noexcept {
-    return BOOL(std::cmp_not_equal(a, b.value_));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator<(integer a, T b) noexcept {
-    return BOOL(std::cmp_less(a.value_, b));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator<(T a, integer b) noexcept {
-    return BOOL(std::cmp_less(a, b.value_));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator<=(integer a, T b) noexcept {
-    return BOOL(std::cmp_less_equal(a.value_, b));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator<=(T a, integer b) noexcept {
-    return BOOL(std::cmp_less_equal(a, b.value_));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator>(integer a, T b) noexcept {
-    return BOOL(std::cmp_greater(a.value_, b));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator>(T a, integer b) noexcept {
-    return BOOL(std::cmp_greater(a, b.value_));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator>=(integer a, T b) noexcept {
-    return BOOL(std::cmp_greater_equal(a.value_, b));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr BOOL operator>=(T a, integer b) noexcept {
-    return BOOL(std::cmp_greater_equal(a, b.value_));
-  }
-  template <detail::cpp_integer T>
-  friend constexpr std::strong_ordering operator<=>(integer a, T b) noexcept {
-    if (std::cmp_less(a.value_, b)) return std::strong_ordering::less;
-    if (std::cmp_greater(a.value_, b)) return std::strong_ordering::greater;
-    return std::strong_ordering::equal;
-  }
-
  private:
   using math = detail::register_math<detail::register_t<integer>>;
   static constexpr detail::register_t<integer> in_reg(integer x) noexcept { return detail::in_register<integer>(x); }
@@ -765,56 +708,6 @@ class intermediate {
   friend constexpr BOOL operator>=(intermediate a, intermediate b) noexcept { return BOOL(a.value_ >= b.value_); }
   friend constexpr std::strong_ordering operator<=>(intermediate a, intermediate b) noexcept { return a.value_ <=> b.value_; }
 
-  // With a C++ integer: the mathematical values (the register's against the number).
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator==(intermediate a, C b) noexcept {
-    return BOOL(std::cmp_equal(a.value_, b));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator==(C a, intermediate b) noexcept {
-    return BOOL(std::cmp_equal(a, b.value_));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator!=(intermediate a, C b) noexcept {
-    return BOOL(std::cmp_not_equal(a.value_, b));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator!=(C a, intermediate b) noexcept {
-    return BOOL(std::cmp_not_equal(a, b.value_));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator<(intermediate a, C b) noexcept {
-    return BOOL(std::cmp_less(a.value_, b));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator<(C a, intermediate b) noexcept {
-    return BOOL(std::cmp_less(a, b.value_));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator<=(intermediate a, C b) noexcept {
-    return BOOL(std::cmp_less_equal(a.value_, b));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator<=(C a, intermediate b) noexcept {
-    return BOOL(std::cmp_less_equal(a, b.value_));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator>(intermediate a, C b) noexcept {
-    return BOOL(std::cmp_greater(a.value_, b));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator>(C a, intermediate b) noexcept {
-    return BOOL(std::cmp_greater(a, b.value_));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator>=(intermediate a, C b) noexcept {
-    return BOOL(std::cmp_greater_equal(a.value_, b));
-  }
-  template <detail::cpp_integer C>
-  friend constexpr BOOL operator>=(C a, intermediate b) noexcept {
-    return BOOL(std::cmp_greater_equal(a, b.value_));
-  }
-
  private:
   using math = detail::register_math<rep>;
   static intermediate zero_after_division_fault() {
@@ -827,6 +720,77 @@ class intermediate {
 
 template <class T>
 struct detail::is_iec_value<intermediate<T>> : std::true_type {};
+
+// An IEC integer (a variable's, or an intermediate result's register) compared with a C++
+// integer: the mathematical values, without conversion, so INT(-1) < 4000000000u is TRUE and
+// `(us - 1) <> 255` sees the register's 16#FFFFFFFF. A BOOL, as every ST comparison.
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr BOOL operator==(const X& a, C b) noexcept {
+  return BOOL(std::cmp_equal(a.value(), b));
+}
+template <class C, class X>
+  requires(detail::cpp_integer<C> && detail::int_value<X>)
+constexpr BOOL operator==(C a, const X& b) noexcept {
+  return BOOL(std::cmp_equal(a, b.value()));
+}
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr BOOL operator!=(const X& a, C b) noexcept {
+  return BOOL(std::cmp_not_equal(a.value(), b));
+}
+template <class C, class X>
+  requires(detail::cpp_integer<C> && detail::int_value<X>)
+constexpr BOOL operator!=(C a, const X& b) noexcept {
+  return BOOL(std::cmp_not_equal(a, b.value()));
+}
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr BOOL operator<(const X& a, C b) noexcept {
+  return BOOL(std::cmp_less(a.value(), b));
+}
+template <class C, class X>
+  requires(detail::cpp_integer<C> && detail::int_value<X>)
+constexpr BOOL operator<(C a, const X& b) noexcept {
+  return BOOL(std::cmp_less(a, b.value()));
+}
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr BOOL operator<=(const X& a, C b) noexcept {
+  return BOOL(std::cmp_less_equal(a.value(), b));
+}
+template <class C, class X>
+  requires(detail::cpp_integer<C> && detail::int_value<X>)
+constexpr BOOL operator<=(C a, const X& b) noexcept {
+  return BOOL(std::cmp_less_equal(a, b.value()));
+}
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr BOOL operator>(const X& a, C b) noexcept {
+  return BOOL(std::cmp_greater(a.value(), b));
+}
+template <class C, class X>
+  requires(detail::cpp_integer<C> && detail::int_value<X>)
+constexpr BOOL operator>(C a, const X& b) noexcept {
+  return BOOL(std::cmp_greater(a, b.value()));
+}
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr BOOL operator>=(const X& a, C b) noexcept {
+  return BOOL(std::cmp_greater_equal(a.value(), b));
+}
+template <class C, class X>
+  requires(detail::cpp_integer<C> && detail::int_value<X>)
+constexpr BOOL operator>=(C a, const X& b) noexcept {
+  return BOOL(std::cmp_greater_equal(a, b.value()));
+}
+template <class X, class C>
+  requires(detail::int_value<X> && detail::cpp_integer<C>)
+constexpr std::strong_ordering operator<=>(const X& a, C b) noexcept {
+  if (std::cmp_less(a.value(), b)) return std::strong_ordering::less;
+  if (std::cmp_greater(a.value(), b)) return std::strong_ordering::greater;
+  return std::strong_ordering::equal;
+}
 
 namespace detail {
 

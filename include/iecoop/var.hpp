@@ -83,10 +83,11 @@ constexpr void deliver_output(Target& target, const V& value) {
 
 namespace detail {
 
-/// What a block's variable (local<>, read_only<>) is to its readers: its value, with the
-/// operations of its type. Writing is up to the derived class.
-template <class T>
-class variable_value : public condition_conversion<variable_value<T>, T> {
+/// What a variable of iecoop's (local<>, read_only<>, temp<>, retain<>) is to its readers:
+/// its value, with the operations of its type. With `Open`, everyone also has write access to
+/// its parts (`ref()`, `a[i] = x`, `s->x = 1`); assigning the whole is up to the derived class.
+template <class T, bool Open>
+class variable_value : public condition_conversion<variable_value<T, Open>, T> {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
@@ -95,12 +96,30 @@ class variable_value : public condition_conversion<variable_value<T>, T> {
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   /// `pos->x` for a STRUCT, `ip->M()` for an interface variable.
   constexpr decltype(auto) operator->() const noexcept { return arrow_of(value_); }
+  constexpr decltype(auto) operator->() noexcept
+    requires Open
+  {
+    return arrow_of(value_);
+  }
   /// An element of an ARRAY (`a[i]`).
   template <class I>
   constexpr decltype(auto) operator[](I&& index) const
     requires requires(const T& v) { v[std::forward<I>(index)]; }
   {
     return value_[std::forward<I>(index)];
+  }
+  template <class I>
+  constexpr decltype(auto) operator[](I&& index)
+    requires(Open && requires(T& v) { v[std::forward<I>(index)]; })
+  {
+    return value_[std::forward<I>(index)];
+  }
+  /// The variable itself: for members of a structured variable (`pos.ref().x = 1;`) and to
+  /// bind a VAR_IN_OUT to it.
+  [[nodiscard]] constexpr T& ref() noexcept
+    requires Open
+  {
+    return value_;
   }
 
  protected:
@@ -120,6 +139,41 @@ class variable_value : public condition_conversion<variable_value<T>, T> {
   T value_{};
 };
 
+/// A variable everyone may assign (local<>, temp<>, retain<>, persistent<>), with ST's
+/// conversions; Derived is the variable's own type, which `using base::operator=;` (C++ hides a
+/// base's assignments behind the implicit copy assignment).
+template <class Derived, class T>
+class assignable_variable : public variable_value<T, true> {
+  using base = variable_value<T, true>;
+
+ public:
+  /// A non-template operand, so that constants convert as in any assignment (`count = 5;`,
+  /// checked while compiling). Compound assignments (`count += 1;`) are those of every
+  /// variable wrapper (detail/value_operators.hpp).
+  constexpr Derived& operator=(const T& value) {
+    this->assign(value);
+    return static_cast<Derived&>(*this);
+  }
+  /// From another variable wrapper whose value converts implicitly (`dOut = i;` with a
+  /// var<INT> i into a var<DINT>).
+  template <class V>
+    requires converts_through_wrapper<T, V>
+  constexpr Derived& operator=(const V& other) {
+    this->assign_converted(other);
+    return static_cast<Derived&>(*this);
+  }
+  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
+  template <class V>
+    requires rejected_value<T, V>
+  constexpr void operator=(const V&) {
+    reject_value<T, V>();
+  }
+
+ protected:
+  using base::base;
+  constexpr assignable_variable() = default;
+};
+
 }  // namespace detail
 
 /**
@@ -134,8 +188,8 @@ class variable_value : public condition_conversion<variable_value<T>, T> {
  * whoever reads it, is a read_only<T, Owner>.
  */
 template <class T, class Owner>
-class local : public detail::variable_value<T> {
-  using base = detail::variable_value<T>;
+class local : public detail::assignable_variable<local<T, Owner>, T> {
+  using base = detail::assignable_variable<local<T, Owner>, T>;
 
  public:
   /// The block that declares the variable.
@@ -147,41 +201,7 @@ class local : public detail::variable_value<T> {
   constexpr local(const local&) = default;
   /// ST's `a := b` between two locals of the same type.
   constexpr local& operator=(const local&) = default;
-
-  /// A non-template operand, so that constants convert as in any assignment (`count = 5;`,
-  /// checked while compiling). Compound assignments (`count += 1;`) are those of every
-  /// variable wrapper (detail/value_operators.hpp).
-  constexpr local& operator=(const T& value) {
-    this->assign(value);
-    return *this;
-  }
-  /// From another variable wrapper whose value converts implicitly (`dOut = i;` with a
-  /// var<INT> i into a var<DINT>).
-  template <class V>
-    requires detail::converts_through_wrapper<T, V>
-  constexpr local& operator=(const V& other) {
-    this->assign_converted(other);
-    return *this;
-  }
-  /// A value of a type that ST converts only explicitly: rejected, naming the conversion.
-  template <class V>
-    requires detail::rejected_value<T, V>
-  constexpr void operator=(const V&) {
-    detail::reject_value<T, V>();
-  }
-
-  /// The variable itself, for members of a structured local (`pos.ref().x = 1;`) and to bind
-  /// a VAR_IN_OUT to it.
-  [[nodiscard]] constexpr T& ref() noexcept { return this->storage(); }
-  using base::operator->;
-  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(this->storage()); }
-  using base::operator[];
-  template <class I>
-  constexpr decltype(auto) operator[](I&& index)
-    requires requires(T& v) { v[std::forward<I>(index)]; }
-  {
-    return this->storage()[std::forward<I>(index)];
-  }
+  using base::operator=;
 };
 
 /**
@@ -191,8 +211,8 @@ class local : public detail::variable_value<T> {
  * cannot write it (a C++ friend is not inherited): use var<T> for what they write.
  */
 template <class T, class Owner>
-class read_only : public detail::variable_value<T> {
-  using base = detail::variable_value<T>;
+class read_only : public detail::variable_value<T, false> {
+  using base = detail::variable_value<T, false>;
 
  public:
   /// The block that writes the variable.
@@ -405,50 +425,16 @@ class output : public detail::condition_conversion<output<T>, T> {
  * (THIS^.x) — with no C++ local shadowing a member.
  */
 template <class T>
-class temp : public detail::condition_conversion<temp<T>, T> {
- public:
-  using value_type = T;
-  using iecoop_value_wrapper = void;
+class temp : public detail::assignable_variable<temp<T>, T> {
+  using base = detail::assignable_variable<temp<T>, T>;
 
+ public:
   constexpr temp() = default;
   /// The declared initial value: `temp<INT> x{5};` (ST: `x : INT := 5;`).
-  constexpr explicit temp(const T& initial) : value_(initial) {}
-
-  constexpr temp& operator=(const T& value) {
-    detail::copy_value(value_, value);
-    return *this;
-  }
-  template <class V>
-    requires detail::converts_through_wrapper<T, V>
-  constexpr temp& operator=(const V& other) {
-    detail::assign_value(value_, detail::value_of(other));
-    return *this;
-  }
-  template <class V>
-    requires detail::rejected_value<T, V>
-  constexpr void operator=(const V&) {
-    detail::reject_value<T, V>();
-  }
-  constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
-  [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
-  [[nodiscard]] constexpr T& ref() noexcept { return value_; }
-  constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }
-  constexpr decltype(auto) operator->() noexcept { return detail::arrow_of(value_); }
-  template <class I>
-  constexpr decltype(auto) operator[](I&& index) const
-    requires requires(const T& v) { v[std::forward<I>(index)]; }
-  {
-    return value_[std::forward<I>(index)];
-  }
-  template <class I>
-  constexpr decltype(auto) operator[](I&& index)
-    requires requires(T& v) { v[std::forward<I>(index)]; }
-  {
-    return value_[std::forward<I>(index)];
-  }
-
- private:
-  T value_{};
+  constexpr explicit temp(const T& initial) : base(initial) {}
+  constexpr temp(const temp&) = default;
+  constexpr temp& operator=(const temp&) = default;
+  using base::operator=;
 };
 
 namespace detail {
