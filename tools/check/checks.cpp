@@ -302,6 +302,13 @@ class checker {
     return name;
   }
 
+  /// Whether `member` is declared by local<T, Owner> or by the base that gives every variable
+  /// its `ref()`, `[]` and `->` (detail::variable_value).
+  static bool is_variable_member(CXCursor member) {
+    const CXCursor parent = clang_getCursorSemanticParent(member);
+    return is_iecoop_class(parent, "local") || is_iecoop_class(parent, "variable_value");
+  }
+
   /// The local<T, Owner> an expression writes into, if any: the expression itself, or the
   /// variable whose element or member it is (`fb.arr[1]`, `fb.pos->x`).
   static std::optional<std::pair<CXCursor, CXType>> written_local(CXCursor expression) {
@@ -329,7 +336,7 @@ class checker {
           const CXCursor callee = clang_getCursorReferenced(expression);
           const std::string name = spelling(callee);
           if ((name != "operator[]" && name != "operator->") ||
-              !is_iecoop_class(clang_getCursorSemanticParent(callee), "local") ||
+              !is_variable_member(callee) ||
               clang_Cursor_getNumArguments(expression) < 1) {
             return std::nullopt;
           }
@@ -354,7 +361,7 @@ class checker {
     if (assignment_operators.count(name) != 0) {
       if (clang_Cursor_getNumArguments(call) < 1) return;
       target = written_local(clang_Cursor_getArgument(call, 0));
-    } else if (name == "ref" && is_iecoop_class(clang_getCursorSemanticParent(callee), "local")) {
+    } else if (name == "ref" && is_variable_member(callee)) {
       const std::vector<CXCursor> parts = children(call);
       if (parts.empty()) return;
       const std::vector<CXCursor> object = children(parts.front());  // the MemberRefExpr `x.ref`
