@@ -140,7 +140,7 @@ using namespace iecoop;
 using namespace seed_fb_init;
 
 TEST_SUITE("seed: FB_Init, FB_Reinit, FB_Exit") {
-  TEST_CASE("the declaration supplies FB_Init's parameter; first start passes TRUE, FALSE") {
+  TEST_CASE("the declaration supplies FB_Init's parameter, first start passes TRUE, FALSE") {
     gLog = "";
     FB_Valve valve;
     {

@@ -60,7 +60,7 @@ using namespace iecoop;
 using seed_main_ctd_action::MAIN;
 
 TEST_SUITE("seed: MAIN with CTD Inst and ACT_Action") {
-  TEST_CASE("CTD counts down only after LOAD went 0-1-0; the action adds A and B while In is TRUE") {
+  TEST_CASE("CTD counts down only after LOAD went 0-1-0, the action adds A and B while In is TRUE") {
     MAIN main;
     main();
     CHECK(main.Inst.CV == 0);

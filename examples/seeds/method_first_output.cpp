@@ -106,7 +106,7 @@ static_assert(std::is_same_v<decltype(std::declval<FB_DoIt&>().Limit({})), BOOL>
 static_assert(std::is_void_v<decltype(std::declval<FB_DoIt&>().Reset())>);
 
 TEST_SUITE("seed: a METHOD without return type returns its first declared output") {
-  TEST_CASE("DoIt's value is dwSum, the first output; bEqual, the second, only through =>") {
+  TEST_CASE("DoIt's value is dwSum, the first output, bEqual, the second, only through =>") {
     FB_DoIt fbInstance;
     DWORD dwResult;
     BOOL bSame = TRUE;

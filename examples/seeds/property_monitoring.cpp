@@ -115,7 +115,7 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
     CHECK(fbA.iGets == 3);
   }
 
-  TEST_CASE("'variable': each access saves the value; the display shows it and calls nothing") {
+  TEST_CASE("'variable': each access saves the value, the display shows it and calls nothing") {
     PLC_PRG plc_prg;
     plc_prg();  // iA = 1; the comparison and the assignment call Get twice
     CHECK(plc_prg.fbA.iGets == 2);
@@ -150,7 +150,7 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
     CHECK(plc_prg.fbA.prop_iA_variable.monitor() == 11);
   }
 
-  TEST_CASE("'variable': a Set is an access too; the display shows the value written") {
+  TEST_CASE("'variable': a Set is an access too, the display shows the value written") {
     PLC_PRG plc_prg;
     for (int cycle = 1; cycle <= 501; ++cycle) plc_prg();
     // Cycle 501: Get saw 501 (> 500), the Set saved 0, the last Get 0.
@@ -166,7 +166,7 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
     CHECK(plc_prg.fbA.iGets == gets);                     // no Get ran
   }
 
-  TEST_CASE("the two properties cost FB_A nothing; only the saved value takes room") {
+  TEST_CASE("the two properties cost FB_A nothing, only the saved value takes room") {
     struct FB_A_data : function_block<FB_A_data> {
       INT iA;
       INT iGets;

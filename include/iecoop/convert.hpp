@@ -92,11 +92,19 @@ constexpr To from_text(std::string_view text) noexcept {
   if constexpr (std::is_same_v<To, BOOL>) {
     return parse_bool(text).value_or(FALSE);
   } else if constexpr (AnyInteger<To>) {
-    if (const auto r = parse_integer<To>(text)) return r.value_or(To{});
-    // CODESYS accepts a REAL text for integers too ('2.7' -> 3).
-    if (std::is_constant_evaluated()) return To{};
-    if (const auto r = parse_real<LREAL>(text)) return To(round_to<typename To::rep>(r.value_or(LREAL{}).value()));
-    return To{};
+    const auto whole = parse_integer<To>(text);
+    if (whole) return whole.value_or(To{});
+    // CODESYS accepts a REAL text for integers too ('2.7' -> 3). A number outside To's range
+    // is no valid literal of To: 0, like any invalid text (not its low bytes).
+    if (whole.error() == parse_error::out_of_range || std::is_constant_evaluated()) return To{};
+    const auto real = parse_real<LREAL>(text);
+    if (!real) return To{};
+    using rep = typename To::rep;
+    const long double x = real.value_or(LREAL{}).value();
+    const long double lowest = static_cast<long double>(std::numeric_limits<rep>::min()) - 0.5L;
+    const long double highest = static_cast<long double>(std::numeric_limits<rep>::max()) + 0.5L;
+    if (!(x > lowest && x < highest)) return To{};
+    return To(round_to<rep>(x));
   } else if constexpr (AnyReal<To>) {
     if (std::is_constant_evaluated()) return To{};
     return parse_real<To>(text).value_or(To{});

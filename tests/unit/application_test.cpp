@@ -197,7 +197,7 @@ TEST_SUITE("application: execution time, preemption, overruns") {
     CHECK(plc.task("High").statistics().max_jitter == LTIME{});
   }
 
-  TEST_CASE("cycle time statistics: last, min, max, average; and their reset") {
+  TEST_CASE("cycle time statistics: last, min, max, average, and their reset") {
     // Cycle n takes (n % 3 + 1) ms: 1, 2, 3, 1, 2, 3
     application plc{task<FAST_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0}};
     plc.task(0).model_execution_time([](std::uint64_t n, void*) { return LTIME::from_ticks((n % 3 + 1) * 1000000U); });

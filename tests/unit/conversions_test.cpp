@@ -164,13 +164,18 @@ TEST_SUITE("conversions") {
     CHECK(convert<STRING<4>>(INT(-32768)) == "-327");  // a smaller target truncates
   }
 
-  TEST_CASE("text converts to values; invalid text gives zero as in CODESYS") {
+  TEST_CASE("text converts to values, invalid text gives zero as in CODESYS") {
     CHECK(STRING_TO_INT("123") == 123);
     CHECK(STRING_TO_INT(" 42 ") == 42);  // surrounding spaces are ignored
     CHECK(STRING_TO_WORD("16#FF") == 255);
     CHECK(STRING_TO_INT("2.7") == 3);  // a REAL text rounds
     CHECK(STRING_TO_INT("abc") == 0);
     CHECK(STRING_TO_INT("99999") == 0);  // out of range: not a valid INT literal
+    CHECK(STRING_TO_INT("-32768") == -32768);
+    CHECK(STRING_TO_INT("40000.0") == 0);  // a REAL text outside INT, too
+    CHECK(STRING_TO_INT("-32768.4") == -32768);
+    CHECK(STRING_TO_USINT("255.4") == 255);
+    CHECK(STRING_TO_USINT("-1") == 0);
     CHECK(STRING_TO_BOOL("TRUE") == TRUE);
     CHECK(STRING_TO_BOOL("maybe") == FALSE);
     CHECK(STRING_TO_TIME("T#1h") == "T#1h"_iec);

@@ -141,7 +141,7 @@ static_assert(outputs_of<CTUD>::names == std::array<std::string_view, 3>{"QU", "
 static_assert(!std::is_assignable_v<decltype((std::declval<CTU&>().CV)), WORD>);
 
 TEST_SUITE("standard blocks: CTU") {
-  TEST_CASE("counts rising edges, not levels; Q once CV >= PV; RESET clears") {
+  TEST_CASE("counts rising edges, not levels, Q once CV >= PV, RESET clears") {
     check_up<CTU>({
         //  CU    R     PV  Q      CV
         {false, false, 2, false, 0},
@@ -155,7 +155,7 @@ TEST_SUITE("standard blocks: CTU") {
     });
   }
 
-  TEST_CASE("R has priority; the edge memory follows CU also while R is TRUE") {
+  TEST_CASE("R has priority, the edge memory follows CU also while R is TRUE") {
     check_up<iec::CTU>({
         {true, false, 5, false, 1},
         {false, true, 5, false, 0},
@@ -181,7 +181,7 @@ TEST_SUITE("standard blocks: CTU") {
     });
   }
 
-  TEST_CASE("iec and codesys stop at the type's maximum; matiec at PV") {
+  TEST_CASE("iec and codesys stop at the type's maximum, matiec at PV") {
     CTU word_counter;  // WORD: 65535
     word_counter.PV = 10;
     pulse_input(word_counter, &CTU::CU, 70000);
@@ -227,7 +227,7 @@ TEST_SUITE("standard blocks: CTD") {
     });
   }
 
-  TEST_CASE("iec counts below 0 down to the type's minimum; matiec stops at 0") {
+  TEST_CASE("iec counts below 0 down to the type's minimum, matiec stops at 0") {
     check_down<iec::CTD>({
         {true, false, 0, true, -1},
         {false, false, 0, true, -1},
@@ -244,7 +244,7 @@ TEST_SUITE("standard blocks: CTD") {
 }
 
 TEST_SUITE("standard blocks: CTUD") {
-  TEST_CASE("R before LD before counting; simultaneous CU and CD cancel") {
+  TEST_CASE("R before LD before counting, simultaneous CU and CD cancel") {
     check_up_down<CTUD>({
         //  CU    CD     R      LD    PV  QU     QD    CV
         {false, false, false, false, 3, false, true, 0},

@@ -127,7 +127,7 @@ TEST_SUITE("file_storage") {
     CHECK(!std::filesystem::exists(path + ".tmp"));
   }
 
-  TEST_CASE("a path longer than max_path is a fault; the storage then saves and loads nothing") {
+  TEST_CASE("a path longer than max_path is a fault, the storage then saves and loads nothing") {
     iecoop_test::fault_recorder faults;
     const std::string long_path(file_storage::max_path + 1, 'x');
     file_storage storage(long_path.c_str());

@@ -133,7 +133,7 @@ static_assert(std::is_default_constructible_v<FB_Axis> && std::is_final_v<FB_Axi
 static_assert(FunctionBlock<FB_Counter> && FunctionBlock<FB_Axis> && !FunctionBlock<int>);
 
 TEST_SUITE("function blocks") {
-  TEST_CASE("assigning inputs, then calling: ST's inst.x := ...; inst();") {
+  TEST_CASE("assigning inputs, then calling: ST's inst.x := ... then inst()") {
     FB_Counter counter;
     INT shared = 0;
     counter.iShared.bind(shared);
@@ -147,7 +147,7 @@ TEST_SUITE("function blocks") {
     CHECK(counter.iCalls == 2);
   }
 
-  TEST_CASE("a named call assigns the inputs it names; the others keep their values") {
+  TEST_CASE("a named call assigns the inputs it names, the others keep their values") {
     FB_Counter counter;
     INT shared = 100;
     counter("bCount"_ = TRUE, "iStep"_ = 5, "iShared"_ = shared);

@@ -67,7 +67,7 @@ static_assert(first_output_index<Scale_vars> == 2);
 static_assert(first_output_index<Swap_vars> == 2);  // none: field_count
 
 TEST_SUITE("methods and functions") {
-  TEST_CASE("positional arguments fill the inputs in declaration order; the rest keep their initial values") {
+  TEST_CASE("positional arguments fill the inputs in declaration order, the rest keep their initial values") {
     FB_Tools tools;
     CHECK(tools.Scale(21) == 42);  // rFactor := 2.0 by default
     CHECK(tools.Scale({21, 3.0f}) == 63);

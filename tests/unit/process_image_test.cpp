@@ -247,7 +247,7 @@ TEST_SUITE("process image") {
     CHECK(alias_image::read<UINT, "%IW2">() == 0x1235u);
   }
 
-  TEST_CASE("%MD1 is %MW2 and %MW3; %ML0 is %MD0 and %MD1") {
+  TEST_CASE("%MD1 is %MW2 and %MW3, %ML0 is %MD0 and %MD1") {
     alias_image::clear();
     alias_image::write<DWORD, "%MD1">(DWORD(0x11223344u));
     CHECK(alias_image::read<WORD, "%MW2">() == 0x3344);

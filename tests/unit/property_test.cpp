@@ -99,7 +99,7 @@ TEST_SUITE("PROPERTY") {
     CHECK(a.sets == 1);
   }
 
-  TEST_CASE("a copy of a block calls no accessor; assigning a whole block assigns its properties") {
+  TEST_CASE("a copy of a block calls no accessor, assigning a whole block assigns its properties") {
     FB_Tank a;
     a.Level = 12;
     FB_Tank copy = a;  // a new instance: its variables copied, no accessor called

@@ -58,7 +58,7 @@ TEST_SUITE("realtime runner") {
     CHECK_FALSE(runner.fifo_active());
   }
 
-  TEST_CASE("a stop request ends the run; the clock continues from the simulated time") {
+  TEST_CASE("a stop request ends the run, the clock continues from the simulated time") {
     application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
     plc.start();
     plc.run_for("T#1s"_iec);  // simulated first

@@ -392,7 +392,7 @@ TEST_SUITE("retain") {
     CHECK(block.iKept == 77);
   }
 
-  TEST_CASE("a RETAIN section whose layout changed is skipped; the PERSISTENT one is still restored") {
+  TEST_CASE("a RETAIN section whose layout changed is skipped, the PERSISTENT one is still restored") {
     PRG_Machine machine;
     change_everything(machine);
     const retained_object old_objects[] = {object_of(machine)};
@@ -410,7 +410,7 @@ TEST_SUITE("retain") {
     CHECK(changed.stRecipe->iSpeed == 300);
   }
 
-  TEST_CASE("a PERSISTENT section with a retyped variable is skipped; the RETAIN one is still restored") {
+  TEST_CASE("a PERSISTENT section with a retyped variable is skipped, the RETAIN one is still restored") {
     PRG_Machine machine;
     change_everything(machine);
     const retained_object old_objects[] = {object_of(machine)};

@@ -50,7 +50,7 @@ struct FB_CountingMotor : extends<FB_CountingMotor, FB_Motor> {
   void Reset() { nStarts = 0; }  // ACTION Reset: nStarts := 0;
   void body() override {
     SUPER::body();
-    if (nStarts > 2) nStarts += 100;  // nStarts := nStarts + 100;
+    if (nStarts == 3) nStarts += 100;  // IF nStarts = 3 THEN nStarts := nStarts + 100; END_IF
   }
 };
 
@@ -131,7 +131,7 @@ TEST_SUITE("ST meaning: integer expressions compute in the register width") {
     CHECK(iVar == 16388);
   }
 
-  TEST_CASE("SA0066: usintTest - 1 <> 255 is TRUE; TO_USINT makes it FALSE") {
+  TEST_CASE("SA0066: usintTest - 1 <> 255 is TRUE, TO_USINT makes it FALSE") {
     USINT usintTest = 0;
     BOOL xError = usintTest - 1 != 255;  // xError := usintTest - 1 <> 255;
     CHECK(xError == TRUE);
@@ -142,7 +142,7 @@ TEST_SUITE("ST meaning: integer expressions compute in the register width") {
     CHECK((liTest - 1) == -1);
   }
 
-  TEST_CASE("a widening conversion of a temporary result keeps it whole; a narrowing one cuts") {
+  TEST_CASE("a widening conversion of a temporary result keeps it whole, a narrowing one cuts") {
     const INT i = opaque(INT(32767));
     CHECK(INT_TO_DINT(i + 1) == 32768);
     CHECK(TO_DINT(i + 1) == 32768);
@@ -174,7 +174,7 @@ TEST_SUITE("ST meaning: integer expressions compute in the register width") {
 }
 
 TEST_SUITE("ST meaning: REAL meets integers as ST converts them") {
-  TEST_CASE("r := r * i; the integer converts to REAL where REAL holds it exactly") {
+  TEST_CASE("r := r * i: the integer converts to REAL where REAL holds it exactly") {
     REAL r = 1.5f;
     const INT i = 3;
     r = r * i;  // r := r * i;
@@ -195,7 +195,7 @@ TEST_SUITE("ST meaning: REAL meets integers as ST converts them") {
 }
 
 TEST_SUITE("ST meaning: comparisons yield BOOL") {
-  TEST_CASE("b := x = 1 OR x = 3;") {
+  TEST_CASE("b := x = 1 OR x = 3") {
     INT x = 3;
     BOOL b = (x == 1) | (x == 3);
     CHECK(b == TRUE);
@@ -243,7 +243,7 @@ TEST_SUITE("ST meaning: a derived block runs its own body") {
 }
 
 TEST_SUITE("ST meaning: variables") {
-  TEST_CASE("a derived block writes its base's VAR; outside code reads it") {
+  TEST_CASE("a derived block writes its base's VAR, outside code reads it") {
     FB_CountingMotor motor;
     for (int i = 0; i < 3; ++i) {
       motor("bStart"_ = TRUE);
@@ -351,7 +351,7 @@ TEST_SUITE("ST meaning: variables") {
     CHECK(on);
   }
 
-  TEST_CASE("TIME(system_time) is ST's TIME(); TIME() is T#0ms") {
+  TEST_CASE("TIME(system_time) is ST's TIME(), TIME() is T#0ms") {
     cycle_clock::set("LTIME#1m2s3ms4us"_iec);
     const TIME now = TIME(system_time);  // tNow := TIME();
     const LTIME lnow = LTIME(system_time);

@@ -198,7 +198,7 @@ TEST_SUITE("standard blocks: TOF") {
     });
   }
 
-  TEST_CASE("PT lowered while the delay runs ends it at the next call; raised after it, nothing changes") {
+  TEST_CASE("PT lowered while the delay runs ends it at the next call, raised after it, nothing changes") {
     check_timer<TOF>({
         {0, true, 100, true, 0},
         {10, false, 100, true, 0},

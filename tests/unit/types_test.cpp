@@ -199,7 +199,7 @@ TEST_SUITE("elementary types") {
     CHECK(i == 32767);
   }
 
-  TEST_CASE("division truncates toward zero; MOD takes the sign of the dividend") {
+  TEST_CASE("division truncates toward zero, MOD takes the sign of the dividend") {
     CHECK(DINT(-7) / DINT(2) == -3);
     CHECK(DINT(7) / DINT(-2) == -3);
     CHECK(DINT(-7) % DINT(2) == -1);
