@@ -24,10 +24,19 @@ namespace iecoop {
 
 namespace detail {
 
+/// Reads whether Base's body() is noexcept, with the access a derived block has.
+template <class Base>
+struct body_noexcept_probe : Base {
+  static constexpr bool value() noexcept { return noexcept(std::declval<body_noexcept_probe&>().Base::body()); }
+};
+/// Whether Base's body() is noexcept: an override must be as well.
+template <class Base>
+inline constexpr bool body_is_noexcept = body_noexcept_probe<Base>::value();
+
 /// Compiles only if Base's body() is virtual ("marked override, but does not override" if not).
 template <class Base>
 struct virtual_body_probe : Base {
-  void body() override {}
+  void body() noexcept(body_is_noexcept<Base>) override {}
 };
 
 }  // namespace detail
@@ -74,8 +83,8 @@ class extends : public detail::interface_layer_t<Derived, Base, Interfaces>, pub
   // In CODESYS a derived block's implementation replaces its base's, and only SUPER^() runs
   // the base's; C++ would inherit Base's body. So Derived states its own, which overrides this
   // one; this one only exists to say so (compiled with the block's vtable, wherever a Derived
-  // is constructed).
-  void body() override {
+  // is constructed). As noexcept as Base's, which C++ requires of an override.
+  void body() noexcept(detail::body_is_noexcept<Base>) override {
     static_assert(block_access::declares_own_body<Derived>(),
                   "iecoop: a block that EXTENDS another states its own body, as CODESYS does not run the base's "
                   "implementation for it: write `void body() override { SUPER::body(); }` to run the base's "

@@ -409,7 +409,8 @@ using default_process_image = process_image<>;
  * type are the same variable (the same bytes); copying a block copies no I/O.
  */
 template <class T, detail::fixed_string Address, class Image = default_process_image>
-class located : public detail::condition_conversion<located<T, Address, Image>, T> {
+class located : public detail::condition_conversion<located<T, Address, Image>, T>,
+                public detail::widening_conversion<located<T, Address, Image>, T> {
  public:
   using value_type = T;
   using image_type = Image;

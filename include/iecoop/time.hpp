@@ -32,9 +32,10 @@ namespace iecoop {
 
 namespace detail {
 
-/// The value of an IEC or C++ number usable as a factor of a duration.
+/// The value of an IEC or C++ number usable as a factor of a duration (also an intermediate
+/// result: `tCycle * (n + 1)`).
 template <class T>
-concept duration_factor = cpp_integer<T> || std::floating_point<T> || AnyNum<T>;
+concept duration_factor = cpp_integer<T> || std::floating_point<T> || AnyNum<T> || Intermediate<T>;
 
 }  // namespace detail
 
@@ -186,7 +187,7 @@ class basic_time {
   }
   template <class N>
   static constexpr std::int64_t as_int64(N n) noexcept {
-    if constexpr (AnyInt<N>) {
+    if constexpr (AnyInt<N> || Intermediate<N>) {
       return static_cast<std::int64_t>(n.value());  // ULINT factors above 2^63 wrap, harmlessly
     } else {
       return static_cast<std::int64_t>(n);

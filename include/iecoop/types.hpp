@@ -131,6 +131,15 @@ constexpr bool bool_is_no_number() {
                 "convert it first (BOOL_TO_INT(b)), or compare with TRUE / FALSE");
   return false;
 }
+/// The type of a rejected arithmetic between a BOOL and a number: the number's (or BOOL), so
+/// that the expression around it raises no second error.
+template <class A, class B>
+using bool_arithmetic_t = std::conditional_t<std::is_same_v<A, BOOL>, B, A>;
+template <class A, class B>
+constexpr bool_arithmetic_t<A, B> no_bool_arithmetic() {
+  bool_is_no_number<A>();
+  return bool_arithmetic_t<A, B>{};
+}
 }  // namespace detail
 
 /**
@@ -222,34 +231,54 @@ class BOOL {
   // (`b + 1`, `b == 1`, `r * b`, `-b`): rejected, with the rule and the fix.
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator+(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator+(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator-(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator-(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator*(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator*(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator/(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator/(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator%(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator%(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator<<(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator<<(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_with_number<A, B>
-  friend void operator>>(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator>>(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend void operator&(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator&(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend void operator|(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator|(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend void operator^(const A&, const B&) { detail::bool_is_no_number<A>(); }
+  friend constexpr detail::bool_arithmetic_t<A, B> operator^(const A&, const B&) {
+    return detail::no_bool_arithmetic<A, B>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
   friend bool operator==(const A&, const B&) { return detail::bool_is_no_number<A>(); }
@@ -269,12 +298,14 @@ class BOOL {
     requires detail::bool_compared_with_number<A, B>
   friend bool operator>=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
   template <std::same_as<BOOL> B>
-  friend void operator-(const B&) {
+  friend constexpr BOOL operator-(const B&) {
     detail::bool_is_no_number<B>();
+    return BOOL{};
   }
   template <std::same_as<BOOL> B>
-  friend void operator+(const B&) {
+  friend constexpr BOOL operator+(const B&) {
     detail::bool_is_no_number<B>();
+    return BOOL{};
   }
 
  private:
@@ -349,12 +380,36 @@ template <class FR, integer_kind FK, class TR, integer_kind TK>
 inline constexpr bool widens_implicitly<integer<FR, FK>, integer<TR, TK>> =
     std::is_same_v<integer<FR, FK>, integer<TR, TK>> || implicit_widening<FR, FK, TR, TK>;
 
-/// The type of an operation between values of the IEC integer types A and B: the wider
-/// one, or void if neither widens to the other (INT and UINT, WORD and UINT) or either is no
-/// IEC integer type.
+template <class A, class B, class Rep>
+inline constexpr bool both_widen_to = widens_implicitly<A, integer<Rep, integer_kind::signed_int>> &&
+                                      widens_implicitly<B, integer<Rep, integer_kind::signed_int>>;
+/// The smallest signed integer type both A and B widen to implicitly (DINT for INT and UINT),
+/// or void (LINT and ULINT; a bit string and an integer).
+template <class A, class B, class Rep = std::int8_t>
+struct common_signed {
+  using next = std::conditional_t<sizeof(Rep) == 1, std::int16_t, std::conditional_t<sizeof(Rep) == 2, std::int32_t, std::int64_t>>;
+  using type = std::conditional_t<both_widen_to<A, B, Rep>, integer<Rep, integer_kind::signed_int>,
+                                  typename common_signed<A, B, next>::type>;
+};
+template <class A, class B>
+struct common_signed<A, B, std::int64_t> {
+  using type = std::conditional_t<both_widen_to<A, B, std::int64_t>, integer<std::int64_t, integer_kind::signed_int>, void>;
+};
+template <class A, class B>
+using common_signed_t = typename common_signed<A, B>::type;
+
+/// The type of an operation between values of the IEC integer types A and B: the wider one;
+/// for a signed and an unsigned type, the smallest signed type that holds both (INT and UINT
+/// meet as DINT, as IEC widens both to DINT implicitly); void where there is none (a bit
+/// string and an integer, LINT and ULINT) or either is no IEC integer type.
 template <class A, class B>
 using common_integer_t =
-    std::conditional_t<widens_implicitly<A, B>, B, std::conditional_t<widens_implicitly<B, A>, A, void>>;
+    std::conditional_t<widens_implicitly<A, B>, B, std::conditional_t<widens_implicitly<B, A>, A, common_signed_t<A, B>>>;
+
+/// Two IEC integer types that meet only in a third type (INT and UINT as DINT).
+template <class A, class B>
+inline constexpr bool meet_in_third_type =
+    !widens_implicitly<A, B> && !widens_implicitly<B, A> && !std::is_void_v<common_signed_t<A, B>>;
 
 /// An integer type U that an intermediate result of type T converts to only explicitly.
 template <class T, class U>
@@ -409,8 +464,8 @@ template <class Left, class Right>
 constexpr void no_common_type_of() {
   static_assert(dependent_false<Left, Right>,
                 "iecoop: these IEC integer types (spelled in `Left` and `Right`) have no implicit common type "
-                "(signed and unsigned, or bit string and integer); convert one operand explicitly first, e.g. "
-                "UINT_TO_DINT(u) or WORD_TO_INT(w)");
+                "(a bit string and an integer, or LINT and ULINT); convert one operand explicitly first, e.g. "
+                "WORD_TO_INT(w) or ULINT_TO_LINT(u)");
 }
 template <class A, class B>
 constexpr nominal_t<A> no_common_type() {
@@ -419,11 +474,12 @@ constexpr nominal_t<A> no_common_type() {
 }
 
 /// Two IEC integer values of which at least one is an intermediate result, other than two
-/// intermediates of the same type (those have their own operators), whose types have a
-/// common type.
+/// intermediates of the same type (those have their own operators), or two variables that
+/// meet only in a third type (INT and UINT), whose types have a common type.
 template <class A, class B>
 concept mixed_int_operands =
-    int_value<A> && int_value<B> && (is_intermediate<A>::value || is_intermediate<B>::value) &&
+    int_value<A> && int_value<B> &&
+    (is_intermediate<A>::value || is_intermediate<B>::value || meet_in_third_type<nominal_t<A>, nominal_t<B>>) &&
     !(is_intermediate<A>::value && is_intermediate<B>::value && std::is_same_v<A, B>) &&
     !std::is_void_v<common_integer_t<nominal_t<A>, nominal_t<B>>>;
 
@@ -537,6 +593,55 @@ class integer {
   constexpr integer& operator*=(integer b) noexcept { return *this = *this * b; }
   constexpr integer& operator/=(integer b) { return *this = *this / b; }
   constexpr integer& operator%=(integer b) { return *this = *this % b; }
+  // `i += v` with an intermediate result or a value of another IEC type is ST's
+  // `i := i + v`: combined in the register first (`i /= a * b` divides by the whole
+  // product), and assigned as any result is (a wider one is rejected, as in ST).
+  template <class V>
+    requires(detail::int_value<V> && !std::is_same_v<V, integer>)
+  constexpr integer& operator+=(const V& v) {
+    *this = *this + v;
+    return *this;
+  }
+  template <class V>
+    requires(detail::int_value<V> && !std::is_same_v<V, integer>)
+  constexpr integer& operator-=(const V& v) {
+    *this = *this - v;
+    return *this;
+  }
+  template <class V>
+    requires(detail::int_value<V> && !std::is_same_v<V, integer>)
+  constexpr integer& operator*=(const V& v) {
+    *this = *this * v;
+    return *this;
+  }
+  template <class V>
+    requires(detail::int_value<V> && !std::is_same_v<V, integer>)
+  constexpr integer& operator/=(const V& v) {
+    *this = *this / v;
+    return *this;
+  }
+  template <class V>
+    requires(detail::int_value<V> && !std::is_same_v<V, integer>)
+  constexpr integer& operator%=(const V& v) {
+    *this = *this % v;
+    return *this;
+  }
+  // A BOOL, a REAL, a TIME...: ST's `i := i + v` does not assign the result to an integer.
+  template <class V>
+    requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
+  constexpr void operator+=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  template <class V>
+    requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
+  constexpr void operator-=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  template <class V>
+    requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
+  constexpr void operator*=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  template <class V>
+    requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
+  constexpr void operator/=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  template <class V>
+    requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
+  constexpr void operator%=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
   constexpr integer& operator&=(integer b) noexcept { return *this = *this & b; }
   constexpr integer& operator|=(integer b) noexcept { return *this = *this | b; }
   constexpr integer& operator^=(integer b) noexcept { return *this = *this ^ b; }
@@ -946,6 +1051,20 @@ concept real_left_comparand = !is_real<U>::value && ((std::is_arithmetic_v<U> &&
                                                      ((is_integer<U>::value || is_intermediate<U>::value) &&
                                                       std::is_convertible_v<U, real<Rep>>));
 
+/// The right operand of a REAL's `+=`: a C++ number (a constant), a REAL no wider, or an
+/// integer value the type holds exactly.
+template <class Rep, class U>
+concept real_compound_operand =
+    (std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) || (is_real<U>::value && sizeof(typename U::rep) <= sizeof(Rep)) ||
+    ((is_integer<U>::value || is_intermediate<U>::value) && std::is_convertible_v<nominal_t<U>, real<Rep>>);
+/// Any other IEC value (a BOOL, a DINT beside a REAL, an LREAL, a TIME): rejected.
+template <class Rep, class U>
+concept rejected_real_operand = (is_iec_value<U>::value || is_intermediate<U>::value) && !real_compound_operand<Rep, U>;
+template <class Rep, class U>
+constexpr void reject_real_operand() {
+  no_implicit_conversion<spelled_iec_name_t<nominal_t<U>>, spelled_iec_name_t<real<Rep>>>();
+}
+
 /// A comparand as a C++ number: a REAL's float, an integer's value in the REAL's type (exact),
 /// a C++ number itself.
 template <class Rep, class U>
@@ -988,13 +1107,61 @@ class real {
     requires(K != integer_kind::bit_string && std::numeric_limits<R>::digits <= std::numeric_limits<Rep>::digits)
   constexpr real(integer<R, K> value) noexcept : value_(static_cast<Rep>(value.value())) {}  // NOLINT
 
+  /// Assigning a value of another IEC type that does not convert implicitly (`r = l;` for an
+  /// LREAL, `r = i * 2.5;`, `r = b;` for a BOOL): rejected, naming the conversion to write.
+  template <class V>
+    requires(detail::is_iec_value<V>::value && !detail::is_intermediate<V>::value && !std::is_convertible_v<const V&, real>)
+  constexpr void operator=(const V&) noexcept {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<real>>();
+  }
+  template <class V>
+    requires(detail::is_intermediate<V>::value && !std::is_convertible_v<const V&, real>)
+  constexpr void operator=(const V&) noexcept {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>, detail::spelled_iec_name_t<real>>();
+  }
+
   constexpr operator Rep() const noexcept { return value_; }  // NOLINT: behaves as its float
   [[nodiscard]] constexpr Rep value() const noexcept { return value_; }
 
-  constexpr real& operator+=(Rep b) noexcept { value_ += b; return *this; }
-  constexpr real& operator-=(Rep b) noexcept { value_ -= b; return *this; }
-  constexpr real& operator*=(Rep b) noexcept { value_ *= b; return *this; }
-  constexpr real& operator/=(Rep b) noexcept { value_ /= b; return *this; }
+  // `r += v` is ST's `r := r + v`: v a REAL of this width or narrower, an integer the type
+  // holds exactly (INT into REAL), an intermediate result of one, or a C++ number (a
+  // constant). Anything else is rejected as the assignment `r := r + v` would be.
+  template <class U>
+    requires detail::real_compound_operand<Rep, U>
+  constexpr real& operator+=(const U& b) noexcept {
+    value_ = static_cast<Rep>(value_ + detail::real_operand<Rep>(b));
+    return *this;
+  }
+  template <class U>
+    requires detail::real_compound_operand<Rep, U>
+  constexpr real& operator-=(const U& b) noexcept {
+    value_ = static_cast<Rep>(value_ - detail::real_operand<Rep>(b));
+    return *this;
+  }
+  template <class U>
+    requires detail::real_compound_operand<Rep, U>
+  constexpr real& operator*=(const U& b) noexcept {
+    value_ = static_cast<Rep>(value_ * detail::real_operand<Rep>(b));
+    return *this;
+  }
+  template <class U>
+    requires detail::real_compound_operand<Rep, U>
+  constexpr real& operator/=(const U& b) noexcept {
+    value_ = static_cast<Rep>(value_ / detail::real_operand<Rep>(b));
+    return *this;
+  }
+  template <class U>
+    requires detail::rejected_real_operand<Rep, U>
+  constexpr void operator+=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  template <class U>
+    requires detail::rejected_real_operand<Rep, U>
+  constexpr void operator-=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  template <class U>
+    requires detail::rejected_real_operand<Rep, U>
+  constexpr void operator*=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  template <class U>
+    requires detail::rejected_real_operand<Rep, U>
+  constexpr void operator/=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
 
   // Comparisons yield BOOL (templates: exact matches, chosen over C++'s own float operators).
   template <class U>
@@ -1107,21 +1274,23 @@ template <class A, class B>
 concept real_mix = integer_with_real<A, B> || integer_with_real<B, A>;
 /// An IEC integer value beside a REAL/LREAL that cannot hold it exactly (DINT with REAL).
 template <class I, class F>
-concept inexact_integer_with_real = (is_integer<I>::value || is_intermediate<I>::value) && is_real<F>::value &&
-                                    !std::is_convertible_v<nominal_t<I>, F>;
+concept inexact_integer_with_real = (is_integer<I>::value || is_intermediate<I>::value) &&
+                                    !std::is_void_v<typename real_side<F>::type> &&
+                                    !std::is_convertible_v<nominal_t<I>, real<typename real_side<F>::type>>;
 template <class A, class B>
 concept inexact_real_mix = inexact_integer_with_real<A, B> || inexact_integer_with_real<B, A>;
 template <class A, class B>
-using inexact_real_t = std::conditional_t<is_real<A>::value, A, B>;
+using real_mix_rep = std::conditional_t<std::is_void_v<typename real_side<A>::type>, typename real_side<B>::type,
+                                       typename real_side<A>::type>;
+/// The real type of an integer-with-real operation that needs a conversion (DINT * 0.5f).
+template <class A, class B>
+using inexact_real_t = real<real_mix_rep<A, B>>;
 template <class A, class B>
 constexpr inexact_real_t<A, B> no_exact_real() {
-  using I = std::conditional_t<is_real<A>::value, B, A>;
+  using I = std::conditional_t<std::is_void_v<typename real_side<A>::type>, A, B>;
   no_implicit_conversion<spelled_iec_name_t<nominal_t<I>>, spelled_iec_name_t<inexact_real_t<A, B>>>();
   return inexact_real_t<A, B>();
 }
-template <class A, class B>
-using real_mix_rep = std::conditional_t<std::is_void_v<typename real_side<A>::type>, typename real_side<B>::type,
-                                       typename real_side<A>::type>;
 
 template <class R, class X>
 constexpr R as_real(const X& x) noexcept {

@@ -87,7 +87,8 @@ namespace detail {
 /// its value, with the operations of its type. With `Open`, everyone also has write access to
 /// its parts (`ref()`, `a[i] = x`, `s->x = 1`); assigning the whole is up to the derived class.
 template <class T, bool Open>
-class variable_value : public condition_conversion<variable_value<T, Open>, T> {
+class variable_value : public condition_conversion<variable_value<T, Open>, T>,
+                       public widening_conversion<variable_value<T, Open>, T> {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
@@ -258,7 +259,8 @@ class read_only : public detail::variable_value<T, false> {
  * the block). `in_out<const T>` is VAR_IN_OUT CONSTANT.
  */
 template <class T>
-class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_t<T>> {
+class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_t<T>>,
+               public detail::widening_conversion<in_out<T>, std::remove_const_t<T>> {
  public:
   using value_type = std::remove_const_t<T>;
   using iecoop_value_wrapper = void;
@@ -358,7 +360,7 @@ class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_
  * that hands its variables on (`SUPER::M(in)`) still delivers to its own caller.
  */
 template <class T>
-class output : public detail::condition_conversion<output<T>, T> {
+class output : public detail::condition_conversion<output<T>, T>, public detail::widening_conversion<output<T>, T> {
  public:
   using value_type = T;
   using iecoop_value_wrapper = void;

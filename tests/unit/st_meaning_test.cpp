@@ -32,6 +32,18 @@ struct fbSuper : extends<fbSuper, fbA> {
   }
 };
 
+// A base whose body is noexcept: the derived block's override is noexcept as well.
+struct fbQuiet : function_block<fbQuiet> {
+  var<INT> n;
+  virtual void body() noexcept { n = n + 1; }
+};
+struct fbQuieter : extends<fbQuieter, fbQuiet> {
+  void body() noexcept override {
+    SUPER::body();
+    n = n + 10;
+  }
+};
+
 // --- VAR written by a derived block, read from outside ------------------------------------
 
 // FUNCTION_BLOCK FB_Motor  VAR nStarts : INT; bOn : BOOL; END_VAR
@@ -163,6 +175,49 @@ TEST_SUITE("ST meaning: integer expressions compute in the register width") {
     CHECK(((i * 200) / 100) == 600);  // 60000 fits the register, not an INT
   }
 
+  TEST_CASE("a signed and an unsigned type meet in the signed type that holds both") {
+    const INT i = opaque(INT(-1));
+    const UINT u = opaque(UINT(65535));
+    const DINT d = i + u;  // d := i + u;   (INT and UINT both widen to DINT)
+    CHECK(d == 65534);
+    CHECK((i < u) == TRUE);  // C++ would compare converted bits; ST compares the values
+    const SINT s = opaque(SINT(-1));
+    const USINT us = opaque(USINT(255));
+    const INT sum = s + us;  // SINT and USINT meet as INT
+    CHECK(sum == 254);
+    const DINT dd = opaque(DINT(-1));
+    const UDINT ud = opaque(UDINT(4000000000U));
+    const LINT wide = dd + ud;  // DINT and UDINT meet as LINT
+    CHECK(wide == 3999999999LL);
+  }
+
+  TEST_CASE("a compound assignment is x := x <op> v, with v computed whole") {
+    INT i = opaque(INT(30000));
+    const INT a = opaque(INT(300));
+    i /= a * a;  // i := i / (a * a);   the divisor is 90000, not 90000 cut to 16 bits
+    CHECK(i == 0);
+    i = 30000;
+    i -= a * a / 10;  // i := i - a * a / 10;
+    CHECK(i == 21000);
+    const SINT s = opaque(SINT(-3));
+    i += s;  // a narrower variable
+    CHECK(i == 20997);
+    i %= (s + 10);
+    CHECK(i == 20997 % 7);
+    REAL r = 1.5f;
+    r += a;  // r := r + a;   (INT into REAL)
+    CHECK(r == 301.5f);
+    r -= a + 1;
+    CHECK(r == 0.5f);
+    LREAL l = 1.0;
+    l += r;
+    l *= DINT(4);
+    CHECK(l == 6.0);
+    TIME t = "T#10ms"_iec;
+    t = t * (a / 100 + 1);  // t := t * (a / 100 + 1);   an intermediate factor
+    CHECK(t == "T#40ms"_iec);
+  }
+
   TEST_CASE("assignment still wraps, and nothing is undefined behaviour") {
     INT i = opaque(INT(-32768));
     i = -i;
@@ -233,6 +288,13 @@ TEST_SUITE("ST meaning: a derived block runs its own body") {
     a();
     CHECK(b.iCalls == 0);
   }
+  TEST_CASE("a noexcept body is extended like any other") {
+    fbQuieter b;
+    b();
+    fbQuiet& a = b;
+    a();
+    CHECK(b.n == 22);
+  }
   TEST_CASE("SUPER^() runs the base's implementation") {
     fbSuper b;
     b();
@@ -264,6 +326,21 @@ TEST_SUITE("ST meaning: variables") {
     // A VAR passed to a method input of a wider type.
     CHECK(fb.Sum({"dIn"_ = fb.vi}) == 4);
     CHECK(fb.Sum(fb.vi) == 4);
+  }
+
+  TEST_CASE("a VAR reads into a variable of a wider type, as ST assigns it") {
+    FB_Widen fb;
+    fb();
+    const DINT wide = fb.vi;  // nWide := fb.vi;   (a var<INT> into a DINT)
+    CHECK(wide == 3);
+    LREAL l = 0.0;
+    l = fb.vi;
+    CHECK(l == 3.0);
+    TON tmr;
+    tmr("IN"_ = TRUE, "PT"_ = "T#1s"_iec);
+    LTIME elapsed;
+    elapsed = tmr.ET;  // ltElapsed := tmr.ET;   (TIME into LTIME)
+    CHECK(elapsed == LTIME(tmr.ET.get()));
   }
 
   TEST_CASE("compound assignment works alike on every variable form") {

@@ -346,11 +346,14 @@ TEST_SUITE("elementary types") {
     static_assert(std::is_same_v<decltype(r + 1.0f), float>);
   }
 
-  TEST_CASE("mixed signed and unsigned arithmetic needs an explicit conversion") {
-    static_assert(!addable<INT, UINT>);
+  TEST_CASE("signed and unsigned meet in a signed type, a bit string and an integer need a conversion") {
+    static_assert(std::is_same_v<decltype(INT() + UINT()), intermediate<DINT>>);
+    static_assert(std::is_same_v<decltype(SINT() + USINT()), intermediate<INT>>);
+    static_assert(std::is_same_v<decltype(UDINT() - DINT()), intermediate<LINT>>);
+    static_assert(std::is_same_v<decltype(DINT() + UINT()), intermediate<DINT>>);  // UINT widens to DINT
     static_assert(!addable<DINT, WORD>);
-    static_assert(!addable<SINT, USINT>);
-    static_assert(addable<DINT, UINT>);  // UINT widens to DINT
+    static_assert(!addable<LINT, ULINT>);
+    CHECK(INT(-1) + UINT(65535) == 65534);
     CHECK(static_cast<INT>(UINT(65535)) + INT(1) == 0);
   }
 }

@@ -132,6 +132,23 @@ struct condition_conversion<Derived, T> {
   explicit constexpr operator bool() const { return static_cast<bool>(static_cast<const Derived&>(*this).get()); }
 };
 
+/// A wrapper of an IEC value T read into a variable of another IEC type that T converts to
+/// implicitly (`DINT d = fb.nCount;` with a var<INT>, `ltElapsed := tmr.ET;` into an LTIME),
+/// as ST assigns it; C++ alone would need two conversions, the wrapper to T and T to the
+/// other type. A base class for the same reason as condition_conversion: a template
+/// conversion function on a wrapper of an enumeration would break `switch (eMode)`.
+template <class Derived, class T>
+struct widening_conversion {};
+template <class Derived, class T>
+  requires is_iec_value<T>::value
+struct widening_conversion<Derived, T> {
+  template <class U>
+    requires(is_iec_value<U>::value && !std::is_same_v<U, T> && std::is_convertible_v<const T&, U>)
+  constexpr operator U() const {  // NOLINT: reads as the variable
+    return static_cast<const Derived&>(*this).get();
+  }
+};
+
 /// What `w->m` reaches through a wrapper of T: T's own `->` where it has one (an interface
 /// variable, `ip->M()`), else T's members (`pos->x` for a STRUCT).
 template <class T>
@@ -149,7 +166,12 @@ constexpr decltype(auto) arrow_of(T& value) noexcept {
 /// overload, which converts it to T at the call (and checks a constant's range there).
 template <class W, class V>
 concept compound_operand = writable_wrapper<W> && !std::is_same_v<unwrapped_t<V>, unwrapped_t<W>> &&
-                           !(std::is_arithmetic_v<std::remove_cvref_t<V>> && AnyInteger<unwrapped_t<W>>);
+                           !(std::is_arithmetic_v<std::remove_cvref_t<V>> && AnyInteger<unwrapped_t<W>>) &&
+                           !std::is_same_v<unwrapped_t<V>, BOOL>;
+/// A BOOL on the right of a number's compound assignment (`nCount += bPulse`): ST's
+/// `nCount := nCount + bPulse` does not compile, and this says so in one message.
+template <class W, class V>
+concept bool_into_number = writable_wrapper<W> && std::is_same_v<unwrapped_t<V>, BOOL> && number_for_bool<unwrapped_t<W>>;
 
 /// `w = w <op> v` for a wrapper w: read, combine, assign back.
 template <class W, class Op, class V>
@@ -261,6 +283,11 @@ template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator+=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::plus<>{}, v);
 }
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator+=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
+}
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator+=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v));
@@ -269,6 +296,11 @@ template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator-=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::minus<>{}, v);
 }
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator-=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
+}
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator-=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v));
@@ -276,6 +308,11 @@ constexpr auto operator-=(W&& w, V&& v) -> decltype(detail::compound_assign(std:
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator*=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator*=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator*=(W&& w, V&& v)
@@ -286,6 +323,11 @@ template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator/=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::divides<>{}, v);
 }
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator/=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
+}
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator/=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v));
@@ -293,6 +335,11 @@ constexpr auto operator/=(W&& w, V&& v) -> decltype(detail::compound_assign(std:
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator%=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::modulus<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator%=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator%=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v))) {
@@ -302,6 +349,11 @@ template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator&=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, v);
 }
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator&=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
+}
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator&=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v));
@@ -310,6 +362,11 @@ template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator|=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, v);
 }
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator|=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
+}
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator|=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v));
@@ -317,6 +374,11 @@ constexpr auto operator|=(W&& w, V&& v) -> decltype(detail::compound_assign(std:
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator^=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
   return detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, v);
+}
+template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
+constexpr W&& operator^=(W&& w, V&&) {
+  detail::bool_is_no_number<detail::unwrapped_t<V>>();
+  return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator^=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v))) {
