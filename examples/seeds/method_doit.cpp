@@ -55,6 +55,6 @@ TEST_SUITE("seed: method DoIt") {
     CHECK(fbInstance.sLastText == "Hello World,");
     fbInstance.DoIt({1, 2, "0123456789ABCDEF"});
     CHECK(fbInstance.sLastText == "0123456789AB");
-    CHECK(LEN(fbInstance.sLastText.get()) == 12);
+    CHECK(LEN(fbInstance.sLastText) == 12);
   }
 }

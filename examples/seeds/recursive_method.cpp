@@ -25,7 +25,7 @@ struct FB_Math : function_block<FB_Math> {
   };
   DINT Fact(args<Fact_vars> in) {
     if (in.n <= 1) return 1;                   // IF n <= 1 THEN Fact := 1;
-    return in.n * this->Fact(in.n - DINT(1));  // ELSE Fact := n * THIS^.Fact(n - 1); END_IF
+    return in.n * this->Fact(in.n - 1);  // ELSE Fact := n * THIS^.Fact(n - 1); END_IF
   }
 
   // METHOD Fib : DINT                  (recursion through a local instance of the block)
@@ -37,7 +37,7 @@ struct FB_Math : function_block<FB_Math> {
   DINT Fib(args<Fib_vars> in) {
     FB_Math fb_Temp;  // a method's locals are new on every call
     if (in.n < 2) return in.n;  // IF n < 2 THEN Fib := n;
-    return fb_Temp.Fib(in.n - DINT(1)) + fb_Temp.Fib(in.n - DINT(2));  // ELSE Fib := fb_Temp.Fib(n - 1) + fb_Temp.Fib(n - 2); END_IF
+    return fb_Temp.Fib(in.n - 1) + fb_Temp.Fib(in.n - 2);  // ELSE Fib := fb_Temp.Fib(n - 1) + fb_Temp.Fib(n - 2); END_IF
   }
 };
 
