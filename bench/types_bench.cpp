@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
-#include <iecoop/types.hpp>
+#include <iecoop/types/elementary.hpp>
 
 namespace {
 

@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include <iecoop/text.hpp>
-#include <iecoop/time.hpp>
-#include <iecoop/types.hpp>
+#include <iecoop/types/literal_text.hpp>
+#include <iecoop/types/time.hpp>
+#include <iecoop/types/elementary.hpp>
 
 #if defined(__arm__)
 #include "semihosting.hpp"

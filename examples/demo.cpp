@@ -22,7 +22,7 @@
 // the options.
 #include <iecoop/fmt.hpp>
 #include <iecoop/iecoop.hpp>
-#include <iecoop/realtime.hpp>
+#include <iecoop/runtime/realtime.hpp>
 
 #include <fmt/core.h>
 

@@ -1,6 +1,6 @@
 // Division by zero with the default fault handler: the program must print the fault and
 // abort (CTest expects the message and a failing exit).
-#include <iecoop/types.hpp>
+#include <iecoop/types/elementary.hpp>
 
 #include <cstdio>
 

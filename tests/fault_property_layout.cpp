@@ -4,9 +4,9 @@
 // program prints the fault and aborts; with a handler that returns (argument "returning") it
 // aborts after the handler ran. No accessor is ever called on the wrong bytes. CTest expects
 // the message and a failing exit.
-#include <iecoop/function_block.hpp>
-#include <iecoop/property.hpp>
-#include <iecoop/types.hpp>
+#include <iecoop/pou/function_block.hpp>
+#include <iecoop/pou/property.hpp>
+#include <iecoop/types/elementary.hpp>
 
 #include <cstdio>
 #include <cstring>

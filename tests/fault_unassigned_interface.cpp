@@ -2,8 +2,8 @@
 // handler: with the default handler (argument "default") it prints the fault and aborts;
 // with a handler that returns (argument "returning") the call still cannot be made, so the
 // program aborts after the handler ran. CTest expects the message and a failing exit.
-#include <iecoop/interface.hpp>
-#include <iecoop/types.hpp>
+#include <iecoop/pou/interface.hpp>
+#include <iecoop/types/elementary.hpp>
 
 #include <cstdio>
 #include <cstring>

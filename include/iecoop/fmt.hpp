@@ -15,10 +15,10 @@
 
 #include <iecoop/detail/utf8.hpp>
 #include <iecoop/detail/value_operators.hpp>
-#include <iecoop/string.hpp>
-#include <iecoop/text.hpp>
-#include <iecoop/time.hpp>
-#include <iecoop/types.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/literal_text.hpp>
+#include <iecoop/types/string.hpp>
+#include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

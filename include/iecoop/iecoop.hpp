@@ -2,44 +2,55 @@
 // iecoop/iecoop.hpp — everything iecoop offers, in one include. (The optional integrations
 // <iecoop/fmt.hpp> and <iecoop/ostream.hpp> are not included: they pull in fmt and
 // <ostream>, which the core never needs; nor is the POSIX real-time runner
-// <iecoop/realtime.hpp>.)
+// <iecoop/runtime/realtime.hpp>.)
 #pragma once
 
 // IWYU pragma: begin_exports
-#include <iecoop/access.hpp>
-#include <iecoop/address.hpp>
-#include <iecoop/application.hpp>
-#include <iecoop/bistables.hpp>
 #include <iecoop/config.hpp>
-#include <iecoop/conversions.hpp>
-#include <iecoop/convert.hpp>
-#include <iecoop/counters.hpp>
-#include <iecoop/cycle_clock.hpp>
-#include <iecoop/dialect.hpp>
-#include <iecoop/edges.hpp>
-#include <iecoop/extends.hpp>
 #include <iecoop/fault.hpp>
-#include <iecoop/file_storage.hpp>
-#include <iecoop/function_block.hpp>
-#include <iecoop/global_variables.hpp>
-#include <iecoop/interface.hpp>
-#include <iecoop/io.hpp>
-#include <iecoop/lifecycle.hpp>
-#include <iecoop/literals.hpp>
-#include <iecoop/method.hpp>
-#include <iecoop/named.hpp>
-#include <iecoop/pins.hpp>
-#include <iecoop/process_image.hpp>
-#include <iecoop/program.hpp>
-#include <iecoop/property.hpp>
-#include <iecoop/reflect.hpp>
-#include <iecoop/retain.hpp>
-#include <iecoop/string.hpp>
-#include <iecoop/string_functions.hpp>
-#include <iecoop/task.hpp>
-#include <iecoop/text.hpp>
-#include <iecoop/time.hpp>
-#include <iecoop/timers.hpp>
-#include <iecoop/types.hpp>
-#include <iecoop/var.hpp>
+
+// types/: the elementary data types, their literals and conversions (IEC 61131-3 6.3, 6.4)
+#include <iecoop/types/convert.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/literal_text.hpp>
+#include <iecoop/types/literals.hpp>
+#include <iecoop/types/string.hpp>
+#include <iecoop/types/time.hpp>
+
+// pou/: program organisation units and the object-oriented extensions (6.5, 6.6)
+#include <iecoop/pou/access.hpp>
+#include <iecoop/pou/call_interface.hpp>
+#include <iecoop/pou/extends.hpp>
+#include <iecoop/pou/function_block.hpp>
+#include <iecoop/pou/global_variables.hpp>
+#include <iecoop/pou/interface.hpp>
+#include <iecoop/pou/lifecycle.hpp>
+#include <iecoop/pou/method.hpp>
+#include <iecoop/pou/named_arguments.hpp>
+#include <iecoop/pou/program.hpp>
+#include <iecoop/pou/property.hpp>
+#include <iecoop/pou/variables.hpp>
+
+// standard/: the standard functions and function blocks (6.6.2, 6.6.3)
+#include <iecoop/standard/bistables.hpp>
+#include <iecoop/standard/conversion_functions.hpp>
+#include <iecoop/standard/counters.hpp>
+#include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/standard/dialect.hpp>
+#include <iecoop/standard/edges.hpp>
+#include <iecoop/standard/string_functions.hpp>
+#include <iecoop/standard/timers.hpp>
+
+// io/: direct addresses, the process image, located variables, I/O drivers (6.5.5)
+#include <iecoop/io/address.hpp>
+#include <iecoop/io/driver.hpp>
+#include <iecoop/io/process_image.hpp>
+
+// runtime/: tasks, the scheduler, the application, RETAIN (6.8)
+#include <iecoop/runtime/application.hpp>
+#include <iecoop/runtime/configuration.hpp>
+#include <iecoop/runtime/file_storage.hpp>
+#include <iecoop/runtime/retain.hpp>
+#include <iecoop/runtime/scheduler.hpp>
+#include <iecoop/runtime/task.hpp>
 // IWYU pragma: end_exports

@@ -9,12 +9,12 @@
 #include <string_view>
 
 #include <iecoop/detail/utf8.hpp>
-#include <iecoop/property.hpp>
-#include <iecoop/string.hpp>
-#include <iecoop/text.hpp>
-#include <iecoop/time.hpp>
-#include <iecoop/types.hpp>
-#include <iecoop/var.hpp>
+#include <iecoop/pou/property.hpp>
+#include <iecoop/pou/variables.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/literal_text.hpp>
+#include <iecoop/types/string.hpp>
+#include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

@@ -2,7 +2,7 @@
 // read and written like the plain variable it holds; only its construction and destruction
 // touch the list of remanent variables.
 #include <iecoop/iecoop.hpp>
-#include <iecoop/retain.hpp>
+#include <iecoop/runtime/retain.hpp>
 
 using namespace iecoop;
 

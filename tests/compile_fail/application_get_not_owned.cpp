@@ -1,6 +1,6 @@
 // EXPECT: iecoop: the application owns no instance of this type
-#include <iecoop/application.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/application.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

@@ -1,8 +1,8 @@
 // EXPECT: iecoop: two located variables overlap
 // The application checks the located variables of all its programs and global variable
 // lists together: here two programs drive the same output bit (%QW0 contains %QX1.2).
-#include <iecoop/application.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/application.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct MOTOR_PRG : program<MOTOR_PRG> {

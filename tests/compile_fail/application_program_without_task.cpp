@@ -1,8 +1,8 @@
 // EXPECT: iecoop: a PROGRAM is assigned to no task
 // IEC's `PROGRAM Log : LOG_PRG;` without `WITH <task>`: the application would own a program
 // that never runs. Name it in a task.
-#include <iecoop/application.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/application.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

@@ -1,7 +1,7 @@
 // EXPECT: a RETAIN or PERSISTENT array is written retain<std::array<T, N>>
 // ST's `VAR RETAIN aValues : ARRAY[0..2] OF INT; END_VAR` is a retain<std::array<INT, 3>>.
 #include <iecoop/iecoop.hpp>
-#include <iecoop/retain.hpp>
+#include <iecoop/runtime/retain.hpp>
 
 #include <array>
 

@@ -2,7 +2,7 @@
 // RETAIN and PERSISTENT values are saved and restored as bytes: a type with a destructor of
 // its own, or one that owns memory elsewhere (std::string), cannot be RETAIN.
 #include <iecoop/iecoop.hpp>
-#include <iecoop/retain.hpp>
+#include <iecoop/runtime/retain.hpp>
 
 #include <string>
 

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a task calls PROGRAMs
 // As in CODESYS, a task calls programs; function blocks are called from a program.
-#include <iecoop/task.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct FB_Motor : function_block<FB_Motor> {

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a task priority is 0 \(highest\) to 31 \(lowest\)
 // A CODESYS task priority is 0..31; anything else is rejected while compiling.
-#include <iecoop/application.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/application.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

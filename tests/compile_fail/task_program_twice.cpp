@@ -1,6 +1,6 @@
 // EXPECT: iecoop: a task calls the same program twice
-#include <iecoop/task.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

@@ -1,6 +1,6 @@
 // EXPECT: iecoop: a watchdog time must be greater than zero
-#include <iecoop/task.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

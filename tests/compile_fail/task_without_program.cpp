@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a task calls at least one program
 // A task with nothing to call is a configuration mistake.
-#include <iecoop/task.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

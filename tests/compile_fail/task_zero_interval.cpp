@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a cyclic task needs an interval greater than zero
 // A cyclic task of interval 0 would run endlessly at one instant.
-#include <iecoop/task.hpp>
-#include <iecoop/literals.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/types/literals.hpp>
 
 using namespace iecoop;
 struct PLC_PRG : program<PLC_PRG> {

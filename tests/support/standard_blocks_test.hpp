@@ -3,8 +3,8 @@
 
 #include <cstdint>
 
-#include <iecoop/cycle_clock.hpp>
-#include <iecoop/time.hpp>
+#include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/types/time.hpp>
 
 namespace iecoop_test {
 

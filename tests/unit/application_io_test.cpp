@@ -3,7 +3,7 @@
 // in programs, and the I/O drivers.
 #include "iecoop_test.hpp"
 
-#include <iecoop/application.hpp>
+#include <iecoop/runtime/application.hpp>
 
 #include <vector>
 

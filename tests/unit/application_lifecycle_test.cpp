@@ -4,8 +4,8 @@
 // kept in memory, in a memory_storage or in a file.
 #include "iecoop_test.hpp"
 
-#include <iecoop/application.hpp>
-#include <iecoop/file_storage.hpp>
+#include <iecoop/runtime/application.hpp>
+#include <iecoop/runtime/file_storage.hpp>
 
 #include <cstdio>
 #include <string>

@@ -4,7 +4,7 @@
 // watchdog's product, and event sampling after a cycle ends.
 #include "iecoop_test.hpp"
 
-#include <iecoop/application.hpp>
+#include <iecoop/runtime/application.hpp>
 
 using namespace iecoop;
 using iecoop_test::fault_recorder;

@@ -3,7 +3,7 @@
 // timeline is worked out by hand in the comment beside it.
 #include "iecoop_test.hpp"
 
-#include <iecoop/application.hpp>
+#include <iecoop/runtime/application.hpp>
 
 #include <string>
 #include <vector>

@@ -1,8 +1,8 @@
 // file_storage: the RETAIN/PERSISTENT image in a file, written atomically.
 #include "iecoop_test.hpp"
 
-#include <iecoop/file_storage.hpp>
-#include <iecoop/retain.hpp>
+#include <iecoop/runtime/file_storage.hpp>
+#include <iecoop/runtime/retain.hpp>
 
 #include <algorithm>
 #include <array>

@@ -3,8 +3,8 @@
 // task cycles as the scheduler does (inputs latched at the start, outputs sent at the end).
 #include "iecoop_test.hpp"
 
-#include <iecoop/io.hpp>
-#include <iecoop/process_image.hpp>
+#include <iecoop/io/driver.hpp>
+#include <iecoop/io/process_image.hpp>
 
 #include <array>
 #include <cstddef>

@@ -4,8 +4,8 @@
 // the compile-fail tests located_*.)
 #include "iecoop_test.hpp"
 
-#include <iecoop/address.hpp>
-#include <iecoop/process_image.hpp>
+#include <iecoop/io/address.hpp>
+#include <iecoop/io/process_image.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -18,8 +18,8 @@ namespace {
 // ---------------------------------------------------------------------------------------
 // Addresses
 
-constexpr io_address parsed(std::string_view text) { return parse_address(text).address; }
-constexpr address_error error_of(std::string_view text) { return parse_address(text).error; }
+constexpr io_address parsed(std::string_view text) { return parse_address(text).value(); }
+constexpr address_error error_of(std::string_view text) { return parse_address(text).error(); }
 
 // Every width, with and without X.
 static_assert(address_of<"%IX0.5"> == io_address{io_area::input, io_width::bit, 0, 5});
@@ -91,7 +91,12 @@ static_assert(error_of("%IW2.5.7.1") == address_error::hierarchical);
 static_assert(error_of("%IX2.5.7") == address_error::hierarchical);
 static_assert(error_of("%IW2x") == address_error::trailing_characters);
 static_assert(error_of("%IX0.5 ") == address_error::trailing_characters);
-static_assert(parse_address("%QW2").ok() && !parse_address("%QW").ok());
+static_assert(parse_address("%QW2").has_value() && !parse_address("%QW"));
+// Like a literal's parse_result, a failed address says where the text went wrong.
+static_assert(parse_address("IX0.0").position() == 0);
+static_assert(parse_address("%AX0.0").position() == 1);
+static_assert(parse_address("%IW2x").position() == 4);
+static_assert(parse_address("%QW").value_or(io_address{io_area::memory, io_width::byte, 7, 0}).number == 7);
 
 // ---------------------------------------------------------------------------------------
 // Process images (each test has its own tag, so its bytes are its own)

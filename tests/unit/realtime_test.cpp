@@ -3,7 +3,7 @@
 // figures belong to bench/).
 #include "iecoop_test.hpp"
 
-#include <iecoop/realtime.hpp>
+#include <iecoop/runtime/realtime.hpp>
 
 #include <atomic>
 #include <chrono>

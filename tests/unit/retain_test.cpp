@@ -2,7 +2,7 @@
 // restores over resets and restarts, layout changes, and memory_storage.
 #include "iecoop_test.hpp"
 
-#include <iecoop/retain.hpp>
+#include <iecoop/runtime/retain.hpp>
 
 #include <array>
 #include <cstddef>

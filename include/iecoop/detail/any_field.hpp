@@ -2,7 +2,7 @@
 // iecoop/detail/any_field.hpp — a stand-in for "some field" when iecoop counts the fields of
 // an aggregate. Types with converting constructor templates exclude it (see iec_string),
 // because such a constructor and any_field's conversion would otherwise be ambiguous.
-// IWYU pragma: private, include <iecoop/reflect.hpp>
+// IWYU pragma: private, include <iecoop/detail/reflect.hpp>
 #pragma once
 
 namespace iecoop::detail {

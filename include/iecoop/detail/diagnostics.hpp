@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <utility>
 
+#include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
 
 namespace iecoop::detail {
@@ -18,10 +19,6 @@ namespace iecoop::detail {
 /// namespace-scope and default member initializers at compile time and calls them at run
 /// time instead: there the check becomes a fault (fault_kind::invalid_value).
 inline void compile_error(const char* message) { fault(fault_kind::invalid_value, message); }
-
-/// false, but only once T is known: for static_assert in templates that must not be used.
-template <class...>
-inline constexpr bool dependent_false = false;
 
 /// A name or a literal spelled out as a type, `spelled<'I', 'M'>`, so that a diagnostic shows
 /// the user's own text in its template arguments on both compilers (Clang 14 prints a string

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/fixed_string.hpp — a string usable as a template argument (for "..."_iec).
-// IWYU pragma: private, include <iecoop/literals.hpp>
+// IWYU pragma: private, include <iecoop/types/literals.hpp>
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/float_to_int.hpp — floating-point to integer without undefined behaviour.
-// IWYU pragma: private, include <iecoop/convert.hpp>
+// IWYU pragma: private, include <iecoop/types/convert.hpp>
 #pragma once
 
 #include <cstdint>

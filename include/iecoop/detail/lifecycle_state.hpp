@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/lifecycle_state.hpp — what the lifecycle operation under way passes to
 // FB_Init and FB_Exit, and whether instances are being relocated (an online change).
-// IWYU pragma: private, include <iecoop/lifecycle.hpp>
+// IWYU pragma: private, include <iecoop/pou/lifecycle.hpp>
 #pragma once
 
 namespace iecoop::detail {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/ready_queues.hpp — the scheduler's ready queues: which task gets the
 // processor next, in O(1).
-// IWYU pragma: private, include <iecoop/application.hpp>
+// IWYU pragma: private, include <iecoop/runtime/application.hpp>
 #pragma once
 
 #include <array>

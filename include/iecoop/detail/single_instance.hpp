@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/single_instance.hpp — a type of which one instance lives at a time, reachable
 // from anywhere: PROGRAMs and global variable lists.
-// IWYU pragma: private, include <iecoop/program.hpp>
+// IWYU pragma: private, include <iecoop/pou/program.hpp>
 #pragma once
 
 #include <iecoop/fault.hpp>

@@ -2,12 +2,12 @@
 // iecoop/detail/type_hash.hpp — a 32-bit FNV-1a hash, and a type's hash computed from its
 // name at compile time, without RTTI: what RETAIN and PERSISTENT images record so that a
 // retyped variable (INT -> UINT) is recognised.
-// IWYU pragma: private, include <iecoop/retain.hpp>
+// IWYU pragma: private, include <iecoop/runtime/retain.hpp>
 //
 // The IEC elementary types, STRING(n), WSTRING(n) and arrays of them are hashed under their
 // IEC names ("INT", "STRING(10)", "ARRAY[3] OF INT"), which every compiler and platform
 // spells alike. Any other type is hashed under the compiler's spelling of its name, read from
-// __PRETTY_FUNCTION__ as reflect.hpp reads names: "app::ST_Recipe" for a user STRUCT.
+// __PRETTY_FUNCTION__ as detail/reflect.hpp reads names: "app::ST_Recipe" for a user STRUCT.
 #pragma once
 
 #include <array>
@@ -17,9 +17,9 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
-#include <iecoop/string.hpp>
-#include <iecoop/time.hpp>
-#include <iecoop/types.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/string.hpp>
+#include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
@@ -102,25 +102,8 @@ struct iec_string_traits<iec_string<C, N>> {
 template <class T>
 constexpr void add_type_name(fnv1a& hash) noexcept {
   using U = std::remove_cv_t<T>;
-  if constexpr (std::is_same_v<U, BOOL>) {
-    hash.add("BOOL");
-  } else if constexpr (is_integer<U>::value) {
-    constexpr std::string_view names[3][4] = {{"SINT", "INT", "DINT", "LINT"},
-                                              {"USINT", "UINT", "UDINT", "ULINT"},
-                                              {"BYTE", "WORD", "DWORD", "LWORD"}};
-    constexpr std::size_t family = U::kind == integer_kind::signed_int     ? 0
-                                   : U::kind == integer_kind::unsigned_int ? 1
-                                                                           : 2;
-    constexpr std::size_t width = sizeof(U) == 1 ? 0 : sizeof(U) == 2 ? 1 : sizeof(U) == 4 ? 2 : 3;
-    hash.add(names[family][width]);
-  } else if constexpr (std::is_same_v<U, REAL>) {
-    hash.add("REAL");
-  } else if constexpr (std::is_same_v<U, LREAL>) {
-    hash.add("LREAL");
-  } else if constexpr (std::is_same_v<U, TIME>) {
-    hash.add("TIME");
-  } else if constexpr (std::is_same_v<U, LTIME>) {
-    hash.add("LTIME");
+  if constexpr (!iec_name<U>::value.empty()) {
+    hash.add(iec_name<U>::value);  // BOOL, the integers, REAL, LREAL, TIME, LTIME
   } else if constexpr (iec_string_traits<U>::value) {
     hash.add(iec_string_traits<U>::wide ? "WSTRING(" : "STRING(").add_decimal(iec_string_traits<U>::capacity).add(")");
   } else if constexpr (std::is_array_v<U>) {

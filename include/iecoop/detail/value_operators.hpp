@@ -18,7 +18,7 @@
 #include <type_traits>
 #include <utility>
 
-#include <iecoop/types.hpp>
+#include <iecoop/types/elementary.hpp>
 
 namespace iecoop::detail {
 

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+// iecoop/io/driver.hpp — the pluggable I/O: what connects the process image to the field.
+//
+// Each task cycle the scheduler calls the driver's read_inputs() with the input bytes of the
+// process image before the programs run (the inputs are latched: they do not change during
+// the cycle), and write_outputs() with the output bytes after they ran.
+//
+//   IoDriver        the concept: read_inputs(std::span<std::byte>), write_outputs(std::span<const std::byte>)
+//   no_io           does nothing (the default)
+//   simulated_io<>  a simulated field for tests: set inputs, read back outputs, count cycles
+//   callback_io     two function pointers and a context pointer, for real hardware
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/fixed_string.hpp>
+#include <iecoop/detail/value_operators.hpp>
+#include <iecoop/io/address.hpp>
+#include <iecoop/io/process_image.hpp>
+#include <iecoop/types/elementary.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/**
+ * An I/O driver: `read_inputs(inputs)` fills the input bytes of the process image from the
+ * field, `write_outputs(outputs)` sends the output bytes to it. The spans are the whole
+ * areas; a driver that knows fewer bytes leaves the others alone.
+ */
+template <class D>
+concept IoDriver = requires(D& driver, std::span<std::byte> inputs, std::span<const std::byte> outputs) {
+  driver.read_inputs(inputs);
+  driver.write_outputs(outputs);
+};
+
+/// The driver of a PLC without I/O: the inputs keep their values, the outputs go nowhere.
+struct no_io {
+  constexpr void read_inputs(std::span<std::byte>) noexcept {}
+  constexpr void write_outputs(std::span<const std::byte>) noexcept {}
+};
+
+/**
+ * A driver for real hardware without heap or std::function: two function pointers and a
+ * context pointer passed to both.
+ *
+ *     void read_gpio(std::span<std::byte> in, void* ctx)        { in[0] = std::byte(GPIOA->IDR & 0xFF); }
+ *     void write_gpio(std::span<const std::byte> out, void* ctx) { GPIOB->ODR = std::to_integer<unsigned>(out[0]); }
+ *     callback_io io{&read_gpio, &write_gpio};
+ *
+ * A null function does nothing (a device with inputs only, or outputs only).
+ */
+class callback_io {
+ public:
+  using read_function = void (*)(std::span<std::byte> inputs, void* context);
+  using write_function = void (*)(std::span<const std::byte> outputs, void* context);
+
+  constexpr callback_io() noexcept = default;
+  constexpr callback_io(read_function read, write_function write, void* context = nullptr) noexcept
+      : read_(read), write_(write), context_(context) {}
+
+  void read_inputs(std::span<std::byte> inputs) const {
+    if (read_ != nullptr) read_(inputs, context_);
+  }
+  void write_outputs(std::span<const std::byte> outputs) const {
+    if (write_ != nullptr) write_(outputs, context_);
+  }
+
+  [[nodiscard]] constexpr void* context() const noexcept { return context_; }
+
+ private:
+  read_function read_ = nullptr;
+  write_function write_ = nullptr;
+  void* context_ = nullptr;
+};
+
+/**
+ * A simulated field for tests and simulations: it holds the "physical" input values, which
+ * read_inputs() copies into the image at the start of a cycle, and keeps the outputs the
+ * last write_outputs() sent.
+ *
+ *     simulated_io<> field;
+ *     field.set<"%IX0.5">(TRUE);          // the sensor at input bit 0.5 turns on
+ *     field.set<"%IW2">(INT(300));        // an analogue input
+ *     ... run a cycle ...
+ *     CHECK(field.output<"%QX0.0">());    // what the program switched on
+ *     CHECK(field.get<INT, "%QW4">() == 42);
+ *
+ * Addresses are checked as located variables' are (the value's type must fit the width,
+ * the address must lie inside the image `Image`).
+ */
+template <class Image = default_process_image>
+class simulated_io {
+  static_assert(detail::is_process_image<Image>::value, "iecoop: simulated_io<Image> simulates the field of a process_image<...>");
+
+ public:
+  using image_type = Image;
+
+  /// Sets the field value of input A (%I): `set<"%IX0.5">(TRUE)`, `set<"%IW2">(INT(300))`,
+  /// `set<"%IX0.2">(tPulse.Q)` (a variable wrapper gives its value). The program sees it after
+  /// the next read_inputs().
+  template <detail::fixed_string A, class V>
+  void set(const V& given) noexcept {
+    using T = detail::unwrapped_t<const V&>;
+    const T value = detail::value_of(given);
+    constexpr io_address address = address_of<A>;
+    static_assert(!detail::address_parses<A> || address.area == io_area::input,
+                  "iecoop: simulated_io::set<> sets an input (%I...) of the field; outputs (%Q) are written by the program "
+                  "and memory (%M) is not I/O: read them with get<T, \"%Q...\">(), or use Image::write<T, A>()");
+    static_assert(sizeof(detail::access_check_t<T, A, Image>) > 0);  // its static_asserts report misuse
+    if constexpr (detail::access_valid<T, A, Image> && address.area == io_area::input) {
+      detail::image_store<T, address, Image::mode>(inputs_.data(), value);
+    }
+  }
+
+  /// The value at A as the field sees it: for %I the value set, for %Q the value the last
+  /// write_outputs() sent.
+  template <class T, detail::fixed_string A>
+  [[nodiscard]] T get() const noexcept {
+    constexpr io_address address = address_of<A>;
+    static_assert(!detail::address_parses<A> || address.area != io_area::memory,
+                  "iecoop: memory (%M) is not connected to the field; read it through the process image, "
+                  "Image::read<T, \"%M...\">()");
+    static_assert(sizeof(detail::access_check_t<T, A, Image>) > 0);  // its static_asserts report misuse
+    if constexpr (detail::access_valid<T, A, Image> && address.area == io_area::input) {
+      return detail::image_load<T, address, Image::mode>(inputs_.data());
+    } else if constexpr (detail::access_valid<T, A, Image> && address.area == io_area::output) {
+      return detail::image_load<T, address, Image::mode>(outputs_.data());
+    } else {
+      return T{};
+    }
+  }
+
+  /// The output A as the last write_outputs() sent it, as the default type of its width
+  /// (BOOL for %QX, BYTE, WORD, DWORD, LWORD): `output<"%QX0.0">()`.
+  template <detail::fixed_string A>
+  [[nodiscard]] auto output() const noexcept {
+    constexpr io_address address = address_of<A>;
+    static_assert(!detail::address_parses<A> || address.area == io_area::output,
+                  "iecoop: simulated_io::output<> reads an output (%Q...); read inputs with get<T, \"%I...\">()");
+    using T = detail::default_type_t<address.width>;
+    if constexpr (address.area == io_area::output) {
+      return get<T, A>();
+    } else {
+      return T{};
+    }
+  }
+
+  /// IoDriver: copies the field's inputs into the image's input bytes.
+  void read_inputs(std::span<std::byte> inputs) noexcept {
+    std::copy_n(inputs_.begin(), std::min(inputs.size(), inputs_.size()), inputs.begin());
+    ++reads_;
+  }
+  /// IoDriver: keeps the outputs the program wrote.
+  void write_outputs(std::span<const std::byte> outputs) noexcept {
+    std::copy_n(outputs.begin(), std::min(outputs.size(), outputs_.size()), outputs_.begin());
+    ++writes_;
+  }
+
+  /// How often read_inputs() / write_outputs() were called.
+  [[nodiscard]] std::size_t read_count() const noexcept { return reads_; }
+  [[nodiscard]] std::size_t write_count() const noexcept { return writes_; }
+
+  /// The field's input bytes and the outputs last written.
+  [[nodiscard]] std::span<const std::byte, Image::input_bytes> field_inputs() const noexcept { return inputs_; }
+  [[nodiscard]] std::span<const std::byte, Image::output_bytes> last_outputs() const noexcept { return outputs_; }
+
+  /// Sets every input and output to 0 and the counters to 0.
+  void clear() noexcept {
+    inputs_.fill(std::byte{0});
+    outputs_.fill(std::byte{0});
+    reads_ = 0;
+    writes_ = 0;
+  }
+
+ private:
+  std::array<std::byte, Image::input_bytes> inputs_{};
+  std::array<std::byte, Image::output_bytes> outputs_{};
+  std::size_t reads_ = 0;
+  std::size_t writes_ = 0;
+};
+
+static_assert(IoDriver<no_io>);
+static_assert(IoDriver<callback_io>);
+static_assert(IoDriver<simulated_io<>>);
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>

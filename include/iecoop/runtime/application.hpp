@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: MIT
+// iecoop/runtime/application.hpp — an application: the program instances, the tasks that run them,
+// the process image they share, and a deterministic scheduler in simulated time.
+//
+//     iecoop::application plc{
+//         task<IO_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0, watchdog{"T#2ms"_iec, 2}},
+//         task<SUPERVISION_PRG>{"Slow", cyclic{"T#20ms"_iec}, 5},
+//         globals<GVL>{},
+//     };
+//     plc.connect(io);                 // the I/O driver (simulated_io in tests)
+//     plc.start();                     // FB_Init of every instance; tasks start
+//     plc.run_for("T#1h"_iec);         // an hour of machine time, in milliseconds of yours
+//     plc.task("Fast").statistics();   // cycles, cycle time, jitter, overruns
+//     plc.reset(reset_kind::warm);     // RETAIN and PERSISTENT kept, the rest initialised
+//     plc.stop();                      // FB_Exit of every instance
+//
+// Time is simulated: run_for() jumps from one instant where something happens to the next,
+// so a 1 ms task runs an hour in a fraction of a second and every run is the same. Each task
+// cycle latches the inputs, sets the cycle clock the standard blocks read, calls the task's
+// programs in order, and writes the outputs it changed at its end. A task's execution time is
+// zero unless a test models it (task_state::model_execution_time), which makes preemption,
+// overruns, watchdog faults and jitter testable too. The real-time runner
+// (<iecoop/runtime/realtime.hpp>) runs the same application against the steady clock.
+//
+// The application is a composition of four parts, each in its own header:
+//   configuration<Entries...>  what the tasks, lists, image and retain size are (compile time)
+//   instance_store             the program and list instances (construction = FB_Init)
+//   task_cycles                what a task cycle does: inputs, cycle clock, programs, outputs
+//   scheduler                  when cycles start and end: releases, priorities, watchdog, time
+// and itself holds the lifecycle (start, stop, reset) and the retained data.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/lifecycle_state.hpp>
+#include <iecoop/fault.hpp>
+#include <iecoop/io/driver.hpp>
+#include <iecoop/pou/lifecycle.hpp>
+#include <iecoop/runtime/configuration.hpp>
+#include <iecoop/runtime/instance_store.hpp>
+#include <iecoop/runtime/retain.hpp>
+#include <iecoop/runtime/scheduler.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/runtime/task_cycles.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/// What the application is doing.
+enum class application_state : std::uint8_t {
+  stopped,    ///< no instances: before start() and after stop()
+  running,    ///< tasks run
+  halted,     ///< instances exist, tasks do not run (after a reset; start() runs them again)
+  exception,  ///< a watchdog fault stopped the tasks; reset() leaves this state
+};
+
+/// How start() treats the retained data it finds (in the retain memory or the storage).
+enum class start_mode : std::uint8_t {
+  restart,   ///< a controller restart: RETAIN and PERSISTENT values are restored
+  download,  ///< a new download: only PERSISTENT values are restored
+};
+
+/**
+ * An application: tasks (task<...>{...}), global variable lists (globals<...>{}) and, if the
+ * defaults do not fit, the process image (use_image<...>{}) and the retain memory size
+ * (retain_capacity<N>{}). It owns one instance of every program its tasks call and of every
+ * global variable list, constructs them at start() and destroys them at stop().
+ *
+ * Not copyable or movable (the instances are registered by address). Not thread-safe: run it
+ * from one thread (the simulation is single-threaded; the real-time runner uses one thread).
+ */
+template <class... Entries>
+class application {
+  using config = detail::configuration<Entries...>;
+  using store_type = detail::instance_store<typename config::owned_list>;
+  using cycles_type = detail::task_cycles<typename config::image, store_type, typename config::task_list>;
+
+ public:
+  /// The process image the tasks latch and write.
+  using image = typename config::image;
+  /// Bytes of retain memory.
+  static constexpr std::size_t retain_bytes = config::retain_bytes;
+  /// The scheduler that runs the tasks.
+  using scheduler_type = iecoop::scheduler<config::task_count, cycles_type>;
+
+  explicit application(Entries... entries) : scheduler_(cycles_, config::task_settings_of(entries...)) {
+    config::check_located_variables();
+  }
+  application(const application&) = delete;
+  application& operator=(const application&) = delete;
+  /// Stops the application (FB_Exit of every instance, retained data saved) if it runs.
+  ~application() { stop(); }
+
+  // --- Lifecycle --------------------------------------------------------------------
+
+  /**
+   * Starts the tasks. If the instances do not exist yet (first start, or after stop()), they
+   * are constructed first — FB_Init runs for each, with bInitRetains = FALSE if retained data
+   * was found (in the retain memory from this application's last stop, else in the attached
+   * storage) and TRUE otherwise — and the retained values are restored (`mode` says which). After a reset,
+   * start() continues with the existing instances; cyclic and freewheeling tasks are released
+   * from now() on. On a running application it does nothing. Returns FALSE in the exception
+   * state (reset first).
+   */
+  bool start(start_mode mode = start_mode::restart) {
+    if (scheduler_.state() == scheduler_state::exception) return false;
+    if (scheduler_.state() == scheduler_state::running) return true;
+    if (!constructed_) load(mode);
+    return scheduler_.start();
+  }
+
+  /// Stops the tasks and ends the instances: saves the RETAIN and PERSISTENT values (to the
+  /// retain memory and the attached storage), then FB_Exit of every instance. The next
+  /// start() is a controller restart.
+  void stop() {
+    if (!constructed_) return;
+    const std::size_t size = save(retain_kinds::both);
+    retain_size_ = size;
+    if (size > 0 && storage_.object != nullptr &&
+        !storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size))) {
+      fault(fault_kind::invalid_value, "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or with older data)");
+    }
+    destroy();
+    scheduler_.halt();
+  }
+
+  /**
+   * Resets the application as CODESYS's Reset warm / cold / origin: FB_Exit of every
+   * instance, then FB_Init (bInitRetains = FALSE for warm, TRUE otherwise); a warm reset
+   * keeps RETAIN and PERSISTENT values, a cold one PERSISTENT values, origin none. The
+   * process image is cleared, the task statistics start afresh, an exception is cleared,
+   * and the application is halted: start() runs the tasks again. Does nothing when stopped.
+   */
+  void reset(reset_kind kind) {
+    if (!constructed_) return;
+    const retain_kinds keep = kept_over(kind == reset_kind::warm   ? retain_event::warm_reset
+                                        : kind == reset_kind::cold ? retain_event::cold_reset
+                                                                   : retain_event::origin_reset);
+    const std::size_t size = save(keep);
+    destroy();
+    construct(kind != reset_kind::warm);
+    if (size > 0) restore(keep, size);
+    scheduler_.restart();
+  }
+
+  [[nodiscard]] application_state state() const noexcept {
+    if (!constructed_) return application_state::stopped;
+    switch (scheduler_.state()) {
+      case scheduler_state::running: return application_state::running;
+      case scheduler_state::exception: return application_state::exception;
+      case scheduler_state::halted: break;
+    }
+    return application_state::halted;
+  }
+
+  // --- Simulated time ---------------------------------------------------------------
+
+  /// The simulated time: how long the application has run since it was created.
+  [[nodiscard]] LTIME now() const noexcept { return scheduler_.now(); }
+
+  /// Runs every task that is due in [now(), now() + duration), in priority order, and
+  /// leaves now() at the end of that span. Time passes also while the tasks do not run.
+  void run_for(LTIME duration) { scheduler_.run_for(duration); }
+
+  /// Runs every task that is due before `until` (see run_for).
+  void run_until(LTIME until) { scheduler_.run_until(until); }
+
+  /// Runs `n` base cycles: n times the shortest cyclic interval (1 ms without cyclic tasks).
+  void run_cycles(std::uint64_t n) { run_for(base_cycle() * n); }
+
+  /// The shortest interval of a cyclic task, or 1 ms without one.
+  [[nodiscard]] LTIME base_cycle() const noexcept { return scheduler_.base_cycle(); }
+
+  // --- Tasks and instances ----------------------------------------------------------
+
+  [[nodiscard]] static constexpr std::size_t task_count() noexcept { return config::task_count; }
+  /// The task at `index` in the configuration; an index out of range reports
+  /// fault_kind::invalid_value and yields the first task.
+  [[nodiscard]] task_state& task(std::size_t index) noexcept { return scheduler_.task(index); }
+  [[nodiscard]] const task_state& task(std::size_t index) const noexcept { return scheduler_.task(index); }
+  /// The task called `name`; an unknown name reports fault_kind::invalid_value and yields the first task.
+  [[nodiscard]] task_state& task(std::string_view name) noexcept { return scheduler_.task(name); }
+  [[nodiscard]] std::span<task_state, config::task_count> tasks() noexcept { return scheduler_.tasks(); }
+  [[nodiscard]] std::span<const task_state, config::task_count> tasks() const noexcept { return scheduler_.tasks(); }
+
+  /// The task whose watchdog stopped the application, or nullptr.
+  [[nodiscard]] const task_state* faulted_task() const noexcept { return scheduler_.faulted_task(); }
+
+  /// The scheduler, for a runner that drives the tasks against another clock
+  /// (<iecoop/runtime/realtime.hpp>) or a test that steps them one by one.
+  [[nodiscard]] scheduler_type& scheduler() noexcept { return scheduler_; }
+  [[nodiscard]] const scheduler_type& scheduler() const noexcept { return scheduler_; }
+
+  /// The application's instance of program or global variable list T. Before start() (or
+  /// after stop()) it reports fault_kind::invalid_value and yields a scratch instance.
+  template <class T>
+  [[nodiscard]] T& get() {
+    static_assert(config::template owns<T>,
+                  "iecoop: the application owns no instance of this type; name the program in a task, or the list in globals<...>");
+    if (constructed_) return store_.template get<T>();
+    if constexpr (requires { T::instance(); }) {
+      return T::instance();  // a program or global_variables<>: reports the fault, yields its scratch instance
+    } else {
+      fault(fault_kind::invalid_value, "application::get before start(); a scratch instance stands in");
+      static T& scratch = []() -> T& {
+        detail::scratch_scope making;  // programs inside it do not become the live ones
+        static T instance;
+        return instance;
+      }();
+      return scratch;
+    }
+  }
+
+  // --- I/O, storage, settings ------------------------------------------------------------
+
+  /// Uses `driver` for the I/O from now on: its inputs are latched at the start of each task
+  /// cycle, the outputs a cycle changed are written at its end. The driver must outlive its use.
+  template <IoDriver D>
+  void connect(D& driver) noexcept {
+    cycles_.connect(driver);
+  }
+
+  /// Saves retained data to `storage` at stop() and reads it at the start() that constructs
+  /// the instances (a controller restart, possibly of another process). Must outlive its use.
+  template <RetainStorage S>
+  void use_storage(S& storage) noexcept {
+    storage_.object = &storage;
+    storage_.save = [](void* s, std::span<const std::byte> data) { return static_cast<S*>(s)->save(data); };
+    storage_.load = [](void* s, std::span<std::byte> buffer) { return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer)); };
+  }
+
+  /// Saves the RETAIN and PERSISTENT values to the attached storage now (as TwinCAT's
+  /// FB_WritePersistentData). FALSE without storage, instances or room.
+  bool save_retained() {
+    if (storage_.object == nullptr || !constructed_) return false;
+    const std::size_t size = save(retain_kinds::both);
+    return size > 0 && storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size));
+  }
+
+  /// The processor load freewheeling tasks may use, in percent (CODESYS: 80 by default).
+  /// A freewheeling task pauses after each cycle for cycle time x (100 - L) / L, at least
+  /// 1 ms, where L = min(100, percent) / 2 / (number of freewheeling tasks).
+  void set_freewheeling_load(unsigned percent) noexcept { scheduler_.set_freewheeling_load(percent); }
+
+  /// The outputs as last written to the driver (what the field sees).
+  [[nodiscard]] std::span<const std::byte, image::output_bytes> published_outputs() const noexcept { return cycles_.published(); }
+
+ private:
+  struct storage_binding {
+    void* object = nullptr;
+    bool (*save)(void*, std::span<const std::byte>) = nullptr;
+    std::size_t (*load)(void*, std::span<std::byte>) = nullptr;
+  };
+
+  void construct(bool init_retains) {
+    image::clear();
+    detail::lifecycle_scope initialising({init_retains, false, false, false});
+    store_.construct_all();
+    constructed_ = true;
+    cycles_.publish_image_outputs();  // what FB_Init wrote to %Q goes out with the first cycle
+  }
+
+  void destroy() {
+    detail::lifecycle_scope exiting({true, false, false, false});
+    store_.destroy_all();
+    constructed_ = false;
+  }
+
+  void load(start_mode mode) {
+    // The retain memory holds this application's last stop(): never older than the storage,
+    // which may have failed to save it. A new application (a new process) has none yet.
+    std::size_t size = retain_size_;
+    if (size == 0 && storage_.object != nullptr) {
+      size = storage_.load(storage_.object, retain_memory_);
+      if (size > retain_memory_.size()) size = 0;
+    }
+    const retain_kinds keep =
+        size == 0 ? retain_kinds::none : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
+    construct(!keep.contains(retain_kind::retain));
+    if (size > 0) restore(keep, size);
+    scheduler_.restart();
+  }
+
+  std::size_t save(retain_kinds kinds) {
+    const auto objects = store_.objects();
+    if (kinds.empty() || detail::retained_count(objects, kinds) == 0) return 0;
+    return detail::save_retained(objects, kinds, retain_memory_);
+  }
+  void restore(retain_kinds kinds, std::size_t size) {
+    const auto objects = store_.objects();
+    (void)detail::restore_retained(objects, kinds, std::span<const std::byte>(retain_memory_.data(), size));
+  }
+
+  store_type store_;
+  cycles_type cycles_{store_};
+  scheduler_type scheduler_;
+  std::array<std::byte, retain_bytes> retain_memory_{};
+  std::size_t retain_size_ = 0;
+  storage_binding storage_{};
+  bool constructed_ = false;
+};
+
+template <class... Entries>
+application(Entries...) -> application<Entries...>;
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>

@@ -1,0 +1,477 @@
+// SPDX-License-Identifier: MIT
+// iecoop/runtime/scheduler.hpp — the scheduler: when each task's cycles start and end. It
+// knows the tasks (their settings, states and statistics), the clock, the releases, the
+// dispatch by priority, the watchdog and the simulated advance of time; it knows nothing of
+// programs, the process image or RETAIN. What a cycle does is the `Cycles` object's part
+// (concept TaskCycles): the scheduler calls its begin_cycle(task, now) when a cycle starts
+// and end_cycle(task, now) when it ends.
+//
+//     scheduler<2, my_cycles> s{cycles, {fast_settings, slow_settings}};
+//     s.start();                          // tasks released from now() on
+//     s.run_until("LTIME#1s"_iec);        // simulated: jumps from event to event
+//
+// An application (<iecoop/runtime/application.hpp>) composes a scheduler with its programs,
+// process image and retain memory; the real-time runner (<iecoop/runtime/realtime.hpp>)
+// drives the same scheduler against the steady clock through the stepping API (advance_to,
+// release_due, pick, begin_cycle, end_cycle), as does a test that wants to.
+//
+// The rules (CODESYS's, docs/scheduler.md): the processor goes to the highest priority (0
+// highest) among the tasks released or under way; among equals, to the cycle under way, then
+// the earlier release, then the task first in the configuration. A release that finds the
+// task's previous cycle unfinished is skipped and counted as an overrun. A task's execution
+// time is zero in simulation unless modelled (task_state::model_execution_time).
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/ready_queues.hpp>
+#include <iecoop/fault.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+template <std::size_t N, class Cycles>
+class scheduler;
+
+/**
+ * A task as the scheduler runs it: its settings, its statistics, and the execution time a
+ * simulation gives its cycles.
+ */
+class task_state {
+ public:
+  [[nodiscard]] const char* name() const noexcept { return settings_.name; }
+  [[nodiscard]] task_kind kind() const noexcept { return settings_.kind; }
+  [[nodiscard]] std::uint8_t priority() const noexcept { return settings_.priority; }
+  [[nodiscard]] LTIME interval() const noexcept { return settings_.interval; }
+  [[nodiscard]] const task_settings& settings() const noexcept { return settings_; }
+
+  [[nodiscard]] const task_statistics& statistics() const noexcept { return statistics_; }
+  /// Starts the statistics afresh (CODESYS: IecTaskResetStatistics).
+  void reset_statistics() noexcept { statistics_ = task_statistics{}; }
+
+  /// TRUE while a cycle is released or under way.
+  [[nodiscard]] bool busy() const noexcept { return released_ || active_; }
+  /// TRUE while a cycle is under way (begun, not ended).
+  [[nodiscard]] bool active() const noexcept { return active_; }
+  /// The cycles begun since the tasks were last restarted: cycle n of model_execution_time.
+  [[nodiscard]] std::uint64_t cycle_number() const noexcept { return cycle_number_; }
+
+  /// In simulation, each cycle of this task takes `each_cycle` of processor time.
+  void model_execution_time(LTIME each_cycle) noexcept {
+    cost_constant_ = each_cycle;
+    cost_function_ = nullptr;
+  }
+  /// In simulation, cycle number n (0, 1, ... since start) takes cost(n, context).
+  void model_execution_time(LTIME (*cost)(std::uint64_t cycle, void* context), void* context = nullptr) noexcept {
+    cost_function_ = cost;
+    cost_context_ = context;
+  }
+
+ private:
+  // The scheduler is this class's other half: the state below is what it schedules with.
+  template <std::size_t, class>
+  friend class scheduler;
+
+  [[nodiscard]] LTIME cost_of(std::uint64_t cycle) const {
+    return cost_function_ != nullptr ? cost_function_(cycle, cost_context_) : cost_constant_;
+  }
+
+  task_settings settings_{};
+  task_statistics statistics_{};
+  LTIME next_release_ = LTIME::max();  // cyclic and freewheeling tasks
+  LTIME release_time_{};
+  LTIME start_time_{};
+  LTIME remaining_{};  // simulated processor time the running cycle still needs
+  std::uint64_t cycle_number_ = 0;
+  std::uint32_t watchdog_streak_ = 0;  // watchdog overruns in a row
+  bool released_ = false;
+  bool active_ = false;
+  bool event_previous_ = false;
+  LTIME cost_constant_{};
+  LTIME (*cost_function_)(std::uint64_t, void*) = nullptr;
+  void* cost_context_ = nullptr;
+};
+
+/// What a scheduler drives: the work of a task cycle, at its start and at its end. `task` is
+/// the task's index in the configuration, `now` the scheduler's time.
+template <class C>
+concept TaskCycles = requires(C& cycles, std::size_t task, LTIME now) {
+  cycles.begin_cycle(task, now);
+  cycles.end_cycle(task, now);
+};
+
+/// Whether a scheduler's tasks run.
+enum class scheduler_state : std::uint8_t {
+  halted,     ///< no task runs (before start(), after halt() or restart())
+  running,    ///< tasks are released and run
+  exception,  ///< a watchdog fault stopped the tasks; restart() or halt() leaves this state
+};
+
+namespace detail {
+/// a + b, or LTIME::max() (which the scheduler treats as "never") if that would wrap.
+constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept { return b > LTIME::max() - a ? LTIME::max() : a + b; }
+}  // namespace detail
+
+/**
+ * The scheduler of `N` tasks whose cycles `Cycles` carries out. Not copyable or movable (it
+ * keeps a reference to the cycles); not thread-safe: drive it from one thread.
+ */
+template <std::size_t N, class Cycles>
+class scheduler {
+  static_assert(N > 0, "iecoop: a scheduler needs at least one task; add task<PRG>{...}");
+  static_assert(TaskCycles<Cycles>,
+                "iecoop: a scheduler's Cycles type does a task cycle's work; give it begin_cycle(std::size_t task, LTIME now) "
+                "and end_cycle(std::size_t task, LTIME now)");
+
+ public:
+  /// The value of pick() when no task is ready.
+  static constexpr std::size_t no_task = N;
+
+  /// The tasks `settings`, in configuration order, whose cycles `cycles` carries out. A
+  /// priority above 31 reports fault_kind::invalid_value and is taken as 31; a cyclic task
+  /// without an interval reports it too, and is never released. (task<...>{...} checks both
+  /// while compiling.)
+  scheduler(Cycles& cycles, const std::array<task_settings, N>& settings) noexcept : cycles_(cycles) {
+    for (std::size_t i = 0; i < N; ++i) {
+      task_settings s = settings[i];
+      if (s.priority > 31) {
+        fault(fault_kind::invalid_value, "a task priority is 0 (highest) to 31 (lowest); 31 stands in");
+        s.priority = 31;
+      }
+      if (s.kind == task_kind::cyclic && s.interval == LTIME{}) {
+        fault(fault_kind::invalid_value, "a cyclic task needs an interval greater than zero; the task is never released");
+      }
+      tasks_[i].settings_ = s;
+      has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
+    }
+  }
+  scheduler(const scheduler&) = delete;
+  scheduler& operator=(const scheduler&) = delete;
+
+  // --- State ------------------------------------------------------------------------
+
+  [[nodiscard]] scheduler_state state() const noexcept { return state_; }
+
+  /// Runs the tasks: cyclic and freewheeling tasks are released from now() on. Does nothing
+  /// when running; FALSE in the exception state (restart() first).
+  bool start() noexcept {
+    if (state_ == scheduler_state::exception) return false;
+    if (state_ == scheduler_state::running) return true;
+    state_ = scheduler_state::running;
+    for (task_state& t : tasks_) {
+      if (t.settings_.kind == task_kind::event) continue;
+      const bool never = t.settings_.kind == task_kind::cyclic && t.settings_.interval == LTIME{};
+      t.next_release_ = never ? LTIME::max() : now_;
+    }
+    return true;
+  }
+
+  /// Stops the tasks: releases and cycles under way are forgotten, an exception is cleared;
+  /// the statistics stay. start() runs the tasks again.
+  void halt() noexcept {
+    clear_schedules();
+    faulted_task_ = nullptr;
+    state_ = scheduler_state::halted;
+  }
+
+  /// The tasks as after a download: halted, no cycle under way, statistics, cycle numbers,
+  /// watchdog streaks and event memories cleared.
+  void restart() noexcept {
+    halt();
+    for (task_state& t : tasks_) {
+      t.reset_statistics();
+      t.watchdog_streak_ = 0;
+      t.cycle_number_ = 0;
+      t.event_previous_ = false;
+    }
+  }
+
+  // --- Simulated time ---------------------------------------------------------------
+
+  /// The scheduler's time: simulated, or a real clock's as a runner advances it.
+  [[nodiscard]] LTIME now() const noexcept { return now_; }
+
+  /// Runs every task that is due before `until`, jumping from one instant where something
+  /// happens (a release, the end of a cycle that has execution time) to the next, and leaves
+  /// now() at `until`. Time passes also while the tasks do not run.
+  void run_until(LTIME until) {
+    if (until <= now_) return;
+    while (state_ == scheduler_state::running) {
+      process_instant();
+      const LTIME next = next_instant();
+      if (next >= until || state_ != scheduler_state::running) break;
+      advance_to(next);
+    }
+    advance_to(until);
+  }
+
+  /// run_until(now() + duration).
+  void run_for(LTIME duration) { run_until(detail::add_saturated(now_, duration)); }
+
+  /// The shortest interval of a cyclic task, or 1 ms without one.
+  [[nodiscard]] LTIME base_cycle() const noexcept {
+    LTIME base = LTIME::max();
+    for (const task_state& t : tasks_) {
+      if (t.settings_.kind == task_kind::cyclic && t.settings_.interval != LTIME{} && t.settings_.interval < base) {
+        base = t.settings_.interval;
+      }
+    }
+    return base == LTIME::max() ? LTIME(TIME(1)) : base;
+  }
+
+  // --- Stepping: for a runner that follows another clock ------------------------------
+
+  /// Moves the clock forward to `t` (never back); the cycle run_until() left running uses up
+  /// the time passed.
+  void advance_to(LTIME t) noexcept {
+    if (t <= now_) return;
+    if (running_ != no_task) {
+      task_state& r = tasks_[running_];
+      const LTIME spent = t - now_;
+      r.remaining_ = spent < r.remaining_ ? r.remaining_ - spent : LTIME{};
+    }
+    now_ = t;
+  }
+
+  /// Releases, at now(), every cyclic or freewheeling task that is due and every event task
+  /// whose condition rose. A release that finds the previous cycle unfinished is skipped (an
+  /// overrun); the releases a cyclic task missed while late are omitted and counted.
+  void release_due() {
+    if (state_ != scheduler_state::running) return;
+    for (task_state& t : tasks_) {
+      if (t.settings_.kind == task_kind::event || t.next_release_ > now_) continue;
+      release(index_of(t), t.next_release_);
+      if (t.settings_.kind == task_kind::cyclic) {
+        t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
+        if (t.next_release_ <= now_) {  // releases missed while late: omitted
+          const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
+          t.statistics_.overruns += missed;
+          t.statistics_.consecutive_overruns += static_cast<std::uint32_t>(missed);
+          t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
+        }
+      } else {
+        t.next_release_ = LTIME::max();  // freewheeling: released again when the cycle ends
+      }
+    }
+    sample_events();
+  }
+
+  /// The task that gets the processor: the highest priority among those released or under
+  /// way; among equals, the one under way before those released, then the earlier release,
+  /// then the first in the configuration. no_task if none (or not running). O(1).
+  [[nodiscard]] std::size_t pick() const noexcept { return state_ == scheduler_state::running ? ready_.pick() : no_task; }
+
+  /// Starts, at now(), a cycle of the released task `index` (as pick() chose it): the cycles'
+  /// begin_cycle() does its work.
+  void begin_cycle(std::size_t index) {
+    task_state& t = tasks_[index];
+    t.released_ = false;
+    t.active_ = true;
+    ready_.begin(index, t.settings_.priority);
+    t.start_time_ = now_;
+    t.remaining_ = t.cost_of(t.cycle_number_);
+    ++t.cycle_number_;
+    cycles_.begin_cycle(index, now_);
+  }
+
+  /// Ends, at now(), the cycle of task `index` under way: the cycles' end_cycle() does its
+  /// work, then the statistics and the watchdog are updated. A watchdog fault (the
+  /// sensitivity-th overrun in a row, or one cycle longer than sensitivity x time) puts the
+  /// scheduler in the exception state and reports fault_kind::watchdog.
+  void end_cycle(std::size_t index) {
+    task_state& t = tasks_[index];
+    t.active_ = false;
+    ready_.end(t.settings_.priority);
+    t.remaining_ = LTIME{};
+    cycles_.end_cycle(index, now_);
+    const LTIME cycle_time = now_ - t.start_time_;
+    t.statistics_.record(t.start_time_ - t.release_time_, cycle_time);
+    if (t.settings_.kind == task_kind::freewheeling) t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
+    if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
+  }
+
+  /// Ends, at now(), the cycles left under way (for a runner that takes over from run_until()).
+  void finish_cycles() {
+    running_ = no_task;
+    for (std::size_t i = 0; i < N; ++i) {
+      if (tasks_[i].active_ && state_ == scheduler_state::running) end_cycle(i);
+    }
+  }
+
+  /// The earliest release of a cyclic or freewheeling task (LTIME::max() if none is pending).
+  [[nodiscard]] LTIME next_release() const noexcept {
+    LTIME next = LTIME::max();
+    for (const task_state& t : tasks_) {
+      if (t.next_release_ < next) next = t.next_release_;
+    }
+    return next;
+  }
+
+  /// TRUE if some task is an event task (whose condition a runner must sample).
+  [[nodiscard]] bool has_event_tasks() const noexcept { return has_event_tasks_; }
+
+  // --- Tasks ------------------------------------------------------------------------
+
+  [[nodiscard]] static constexpr std::size_t task_count() noexcept { return N; }
+  /// The task at `index` in the configuration; an index out of range reports
+  /// fault_kind::invalid_value and yields the first task.
+  [[nodiscard]] task_state& task(std::size_t index) noexcept { return tasks_[checked_index(index)]; }
+  [[nodiscard]] const task_state& task(std::size_t index) const noexcept { return tasks_[checked_index(index)]; }
+  /// The task called `name`; an unknown name reports fault_kind::invalid_value and yields the first task.
+  [[nodiscard]] task_state& task(std::string_view name) noexcept {
+    for (task_state& t : tasks_) {
+      if (name == t.settings_.name) return t;
+    }
+    fault(fault_kind::invalid_value, "no task of this name in the application; the first task stands in");
+    return tasks_[0];
+  }
+  [[nodiscard]] std::span<task_state, N> tasks() noexcept { return tasks_; }
+  [[nodiscard]] std::span<const task_state, N> tasks() const noexcept { return tasks_; }
+
+  /// The task whose watchdog put the scheduler in the exception state, or nullptr.
+  [[nodiscard]] const task_state* faulted_task() const noexcept { return faulted_task_; }
+
+  /// The processor load freewheeling tasks may use, in percent (CODESYS: 80 by default).
+  /// A freewheeling task pauses after each cycle for cycle time x (100 - L) / L, at least
+  /// 1 ms, where L = min(100, percent) / 2 / (number of freewheeling tasks).
+  void set_freewheeling_load(unsigned percent) noexcept { freewheeling_load_ = percent == 0 ? 1 : percent; }
+
+ private:
+  static std::size_t checked_index(std::size_t index) noexcept {
+    if (index < N) return index;
+    fault(fault_kind::invalid_value, "no task at this index in the application; the first task stands in");
+    return 0;
+  }
+  std::size_t index_of(const task_state& t) const noexcept { return static_cast<std::size_t>(&t - tasks_.data()); }
+
+  void check_watchdog(task_state& t, LTIME cycle_time) {
+    // The streak is kept apart from the statistics, which a user may reset at any time.
+    task_statistics& s = t.statistics_;
+    if (cycle_time <= t.settings_.watchdog_time) {
+      t.watchdog_streak_ = 0;
+      s.consecutive_watchdog_overruns = 0;
+      return;
+    }
+    ++s.watchdog_overruns;
+    s.consecutive_watchdog_overruns = ++t.watchdog_streak_;
+    const unsigned sensitivity = t.settings_.watchdog_sensitivity;
+    const LTIME watchdog_time = t.settings_.watchdog_time;
+    const bool single_timeout =
+        watchdog_time.count() <= LTIME::max().count() / sensitivity && cycle_time > watchdog_time * sensitivity;
+    if (t.watchdog_streak_ >= sensitivity || single_timeout) {
+      state_ = scheduler_state::exception;
+      faulted_task_ = &t;
+      clear_schedules();
+      fault(fault_kind::watchdog, "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
+    }
+  }
+
+  [[nodiscard]] LTIME freewheeling_pause(LTIME cycle_time) const noexcept {
+    std::uint64_t freewheeling_tasks = 0;
+    for (const task_state& t : tasks_) freewheeling_tasks += t.settings_.kind == task_kind::freewheeling ? 1 : 0;
+    const std::uint64_t max_load = freewheeling_load_ < 100 ? freewheeling_load_ : 100;
+    // L = max_load / 2 / n percent; pause = cycle x (100 - L) / L = cycle x (200 n - max_load) / max_load.
+    const std::uint64_t numerator = 200 * freewheeling_tasks - max_load;
+    const LTIME pause = LTIME::from_ticks(cycle_time.count() / max_load * numerator + cycle_time.count() % max_load * numerator / max_load);
+    const LTIME minimum = LTIME(TIME(1));
+    return pause < minimum ? minimum : pause;
+  }
+
+  void sample_events() {
+    if (!has_event_tasks_) return;
+    for (task_state& t : tasks_) {
+      if (t.settings_.kind != task_kind::event) continue;
+      const bool value = static_cast<bool>(t.settings_.trigger.read());
+      if (value && !t.event_previous_) release(index_of(t), now_);
+      t.event_previous_ = value;
+    }
+  }
+
+  void release(std::size_t index, LTIME at) noexcept {
+    task_state& t = tasks_[index];
+    if (t.busy()) {
+      ++t.statistics_.overruns;
+      ++t.statistics_.consecutive_overruns;
+      return;
+    }
+    t.released_ = true;
+    t.release_time_ = at;
+    t.statistics_.consecutive_overruns = 0;
+    ready_.release(index, t.settings_.priority, [this](std::size_t a, std::size_t b) {
+      return tasks_[a].release_time_ < tasks_[b].release_time_ ||
+             (tasks_[a].release_time_ == tasks_[b].release_time_ && a < b);
+    });
+  }
+
+  // Forget every release and cycle under way (a stop, a reset, an exception).
+  void clear_schedules() noexcept {
+    for (task_state& t : tasks_) {
+      t.released_ = t.active_ = false;
+      t.remaining_ = LTIME{};
+    }
+    ready_.clear();
+    running_ = no_task;
+  }
+
+  /// Everything that happens at now_: the running cycle ends if its time is used up, tasks
+  /// are released, and the processor goes to the highest-priority task — whose cycle starts
+  /// if it had not (and the choice is made again, as the cycle's code may have raised an
+  /// event); cycles that take no time end at once.
+  void process_instant() {
+    if (running_ != no_task && tasks_[running_].remaining_ == LTIME{}) {
+      const std::size_t done = running_;
+      running_ = no_task;
+      end_cycle(done);
+    }
+    if (state_ != scheduler_state::running) return;
+    release_due();
+    while (state_ == scheduler_state::running) {
+      const std::size_t next = ready_.pick();
+      if (next == no_task) break;
+      task_state& t = tasks_[next];
+      if (!t.active_) {
+        begin_cycle(next);
+        sample_events();  // its code may have raised an event of a higher-priority task:
+        continue;         // that one preempts the cycle right away
+      }
+      if (t.remaining_ != LTIME{}) {
+        running_ = next;
+        return;
+      }
+      end_cycle(next);
+      sample_events();  // a condition may read what the cycle's end wrote to the field
+    }
+    running_ = no_task;
+  }
+
+  /// The next instant where something happens: the running cycle ends or a task is released.
+  [[nodiscard]] LTIME next_instant() const noexcept {
+    const LTIME release = next_release();
+    if (running_ == no_task) return release;
+    const LTIME end = detail::add_saturated(now_, tasks_[running_].remaining_);
+    return end < release ? end : release;
+  }
+
+  Cycles& cycles_;
+  std::array<task_state, N> tasks_{};
+  detail::ready_queues<N> ready_{};
+  LTIME now_{};
+  std::size_t running_ = no_task;
+  const task_state* faulted_task_ = nullptr;
+  unsigned freewheeling_load_ = 80;
+  bool has_event_tasks_ = false;
+  scheduler_state state_ = scheduler_state::halted;
+};
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// iecoop/runtime/task.hpp — TASK: when the programs of an application run. A task has a type
+// (cyclic, freewheeling or event), a priority (0 highest .. 31 lowest), an optional watchdog
+// and the programs it calls, in order — CODESYS's task configuration, line for line:
+//
+//     // Task configuration
+//     //   Fast    Cyclic t#1ms    priority 0   watchdog t#2ms, sensitivity 2   calls IO_PRG
+//     //   Slow    Cyclic t#20ms   priority 5                                    calls SUPERVISION_PRG, LOG_PRG
+//     //   Alarm   Event bAlarm    priority 1                                    calls ALARM_PRG
+//     iecoop::task<IO_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0, watchdog{"T#2ms"_iec, 2}}
+//     iecoop::task<SUPERVISION_PRG, LOG_PRG>{"Slow", cyclic{"T#20ms"_iec}, 5}
+//     iecoop::task<ALARM_PRG>{"Alarm", event{bAlarm}, 1}
+//
+// or, in IEC's configuration syntax, `TASK Fast(INTERVAL := T#1ms, PRIORITY := 0);
+// PROGRAM Io WITH Fast : IO_PRG;`. Tasks are handed to an application (<iecoop/runtime/application.hpp>),
+// which owns the program instances and runs the tasks. Constants are checked while compiling:
+// a priority outside 0..31, an interval or watchdog time of zero, a task without programs or
+// calling one program twice do not compile. (Clang 14 evaluates a consteval constructor in a
+// namespace-scope initializer at run time: there a bad value is reported as a fault.)
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/meta.hpp>
+#include <iecoop/pou/program.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/// The three task types of CODESYS's task configuration that iecoop runs.
+enum class task_kind : std::uint8_t {
+  cyclic,        ///< released every interval
+  freewheeling,  ///< released again as soon as its cycle ended and a pause has passed
+  event,         ///< released on the rising edge of a BOOL
+};
+
+/// The short name of a task type: "cyclic", "freewheeling" or "event".
+[[nodiscard]] constexpr const char* to_string(task_kind kind) noexcept {
+  switch (kind) {
+    case task_kind::cyclic: return "cyclic";
+    case task_kind::freewheeling: return "freewheeling";
+    case task_kind::event: return "event";
+  }
+  return "unknown";
+}
+
+// The task's settings are checked by the task's constructor, which is consteval: one immediate
+// call per task, because Clang 14 crashes on a call whose arguments are several immediate
+// invocations (a consteval `cyclic{...}` beside a consteval priority, say).
+
+/// Type "Cyclic" with its interval (ST: INTERVAL := T#10ms), a TIME or LTIME greater than zero.
+struct cyclic {
+  constexpr cyclic(TIME every) noexcept : interval(every) {}  // NOLINT: reads as the configuration
+  constexpr cyclic(LTIME every) noexcept : interval(every) {}  // NOLINT
+  LTIME interval;
+};
+
+/// Type "Freewheeling": runs again and again, pausing after each cycle so that it leaves the
+/// processor to others (see application::set_freewheeling_load).
+struct freewheeling {};
+
+/// Type "Event": the task runs once on each rising edge of a BOOL (ST: SINGLE := bTrigger),
+/// given as a global variable (as CODESYS requires: the task is configured while compiling,
+/// so the variable's address must be a constant) or as a function that reads the condition.
+/// The application samples it whenever something happens (a task cycle starts or ends, a
+/// cyclic task is released) and when a run starts.
+struct event {
+  /// The rising edge of this global variable releases the task.
+  explicit constexpr event(const BOOL& variable) noexcept : variable_(&variable) {}
+  /// The rising edge of what this function returns releases the task.
+  explicit constexpr event(BOOL (*condition)()) noexcept : condition_(condition) {}
+
+  /// The condition's value now.
+  [[nodiscard]] BOOL read() const {
+    if (variable_ != nullptr) return *variable_;
+    return condition_ != nullptr ? condition_() : BOOL(false);
+  }
+
+ private:
+  friend struct task_settings;
+  template <class...>
+  friend class task;
+  constexpr event() noexcept = default;  // never fires: the trigger of a task that is no event task
+
+  const BOOL* variable_ = nullptr;
+  BOOL (*condition_)() = nullptr;
+};
+
+/// A task's watchdog (CODESYS: Watchdog, Time, Sensitivity): a cycle longer than `time` is an
+/// overrun of the watchdog; the `sensitivity`-th overrun in a row (0 counts as 1), or a single
+/// cycle longer than sensitivity x time, is a fault (fault_kind::watchdog), after which the
+/// application stops in an exception state until it is reset. The time must be greater than zero.
+struct watchdog {
+  constexpr watchdog(TIME after, unsigned times = 1) noexcept : time(after), sensitivity(times == 0 ? 1U : times) {}
+  constexpr watchdog(LTIME after, unsigned times = 1) noexcept : time(after), sensitivity(times == 0 ? 1U : times) {}
+  LTIME time;
+  unsigned sensitivity;
+};
+
+/// What every task has, whatever programs it calls.
+struct task_settings {
+  const char* name = "";
+  task_kind kind = task_kind::cyclic;
+  LTIME interval{};              ///< cyclic tasks
+  event trigger{};               ///< event tasks
+  std::uint8_t priority = 31;
+  bool has_watchdog = false;
+  LTIME watchdog_time{};
+  unsigned watchdog_sensitivity = 1;
+};
+
+namespace detail {
+
+template <class P>
+concept program_type = std::is_base_of_v<program<P>, P>;
+
+}  // namespace detail
+
+/**
+ * A task that calls the PROGRAMs `Programs`, in this order, each cycle. The application that
+ * is given the task owns one instance of each program (reach it with P::instance()).
+ *
+ *     task<PLC_PRG>{"MainTask", cyclic{"T#10ms"_iec}, 1}
+ *     task<PLC_PRG>{"MainTask", cyclic{"T#10ms"_iec}, 1, watchdog{"T#20ms"_iec, 3}}
+ *     task<LOG_PRG>{"Background", freewheeling{}, 31}
+ *     task<ALARM_PRG>{"Alarm", event{bAlarm}, 0}
+ */
+template <class... Programs>
+class task {
+  static_assert(sizeof...(Programs) > 0, "iecoop: a task calls at least one program; name them: task<PLC_PRG>{...}");
+  static_assert((detail::program_type<Programs> && ...),
+                "iecoop: a task calls PROGRAMs (types derived from iecoop::program<Self>); call function blocks from a program");
+  static_assert(detail::all_distinct<Programs...>::value,
+                "iecoop: a task calls the same program twice; list each program once per task");
+
+ public:
+  /// A cyclic task: `task<PLC_PRG>{"MainTask", cyclic{"T#10ms"_iec}, 1}`; the priority is 0..31.
+  consteval task(const char* name, cyclic type, int priority) : task(name, task_kind::cyclic, type.interval, event{}, priority, nullptr) {}
+  consteval task(const char* name, cyclic type, int priority, watchdog dog)
+      : task(name, task_kind::cyclic, type.interval, event{}, priority, &dog) {}
+  /// A freewheeling task: `task<LOG_PRG>{"Background", freewheeling{}, 31}`.
+  consteval task(const char* name, freewheeling, int priority) : task(name, task_kind::freewheeling, {}, event{}, priority, nullptr) {}
+  consteval task(const char* name, freewheeling, int priority, watchdog dog)
+      : task(name, task_kind::freewheeling, {}, event{}, priority, &dog) {}
+  /// An event task: `task<ALARM_PRG>{"Alarm", event{bAlarm}, 0}`.
+  consteval task(const char* name, event trigger, int priority) : task(name, task_kind::event, {}, trigger, priority, nullptr) {}
+  consteval task(const char* name, event trigger, int priority, watchdog dog)
+      : task(name, task_kind::event, {}, trigger, priority, &dog) {}
+
+  [[nodiscard]] constexpr const task_settings& settings() const noexcept { return settings_; }
+
+ private:
+  // Every check in one constructor (Clang 14 crashes when a check fails in a function that a
+  // consteval constructor calls, or in a constructor it delegates to and then continues).
+  consteval task(const char* name, task_kind kind, LTIME interval, event trigger, int priority, const watchdog* dog) {
+    if (priority < 0 || priority > 31) {
+      detail::compile_error("iecoop: a task priority is 0 (highest) to 31 (lowest), as in CODESYS; use a value in 0..31");
+    }
+    if (kind == task_kind::cyclic && interval == LTIME::zero()) {
+      detail::compile_error("iecoop: a cyclic task needs an interval greater than zero; write e.g. cyclic{\"T#10ms\"_iec}");
+    }
+    if (dog != nullptr && dog->time == LTIME::zero()) {
+      detail::compile_error("iecoop: a watchdog time must be greater than zero; write e.g. watchdog{\"T#20ms\"_iec, 2}");
+    }
+    settings_.name = name;
+    settings_.kind = kind;
+    settings_.interval = interval;
+    settings_.trigger = trigger;
+    settings_.priority = static_cast<std::uint8_t>(priority);
+    if (dog != nullptr) {
+      settings_.has_watchdog = true;
+      settings_.watchdog_time = dog->time;
+      settings_.watchdog_sensitivity = dog->sensitivity;
+    }
+  }
+
+  task_settings settings_{};
+};
+
+/**
+ * A task's figures, as CODESYS's task monitor shows them (Task_Info2): cycles run, the cycle
+ * time (from the cycle's start to its end, including the time higher-priority tasks took
+ * from it) last/min/max/average, the jitter (how late the cycle started after its release)
+ * last/min/max, overruns (releases skipped because the previous cycle had not ended:
+ * CODESYS's omitted cycles) and watchdog overruns. All times in LTIME.
+ */
+struct task_statistics {
+  std::uint64_t cycles = 0;
+  LTIME last_cycle_time{};
+  LTIME min_cycle_time{};
+  LTIME max_cycle_time{};
+  LTIME total_cycle_time{};
+  LTIME last_jitter{};
+  LTIME min_jitter{};
+  LTIME max_jitter{};
+  std::uint64_t overruns = 0;              ///< releases skipped (omitted cycles)
+  std::uint32_t consecutive_overruns = 0;  ///< of those, in a row up to now
+  std::uint64_t watchdog_overruns = 0;     ///< cycles longer than the watchdog time
+  std::uint32_t consecutive_watchdog_overruns = 0;
+
+  /// Average cycle time over all cycles (0 before the first).
+  [[nodiscard]] constexpr LTIME average_cycle_time() const noexcept {
+    return cycles == 0 ? LTIME{} : LTIME::from_ticks(total_cycle_time.count() / cycles);
+  }
+  /// Peak-to-peak jitter: max - min.
+  [[nodiscard]] constexpr LTIME jitter_span() const noexcept { return max_jitter - min_jitter; }
+
+  /// Records a finished cycle that started `jitter` after its release and took `cycle_time`.
+  constexpr void record(LTIME jitter, LTIME cycle_time) noexcept {
+    if (cycles == 0) {
+      min_cycle_time = max_cycle_time = cycle_time;
+      min_jitter = max_jitter = jitter;
+    } else {
+      if (cycle_time < min_cycle_time) min_cycle_time = cycle_time;
+      if (cycle_time > max_cycle_time) max_cycle_time = cycle_time;
+      if (jitter < min_jitter) min_jitter = jitter;
+      if (jitter > max_jitter) max_jitter = jitter;
+    }
+    ++cycles;
+    last_cycle_time = cycle_time;
+    total_cycle_time += cycle_time;
+    last_jitter = jitter;
+  }
+};
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// iecoop/runtime/task_cycles.hpp — what one task cycle of an application does, as the
+// scheduler (<iecoop/runtime/scheduler.hpp>) calls it: at the cycle's start the inputs are
+// latched from the I/O driver, the cycle clock is set, the task's programs are called in
+// order, and the outputs they changed are staged; at its end the staged outputs are merged
+// into the published outputs, which go to the driver.
+//
+// Outputs are diffed per cycle (docs/design.md, "Outputs are diffed per cycle"): the bits a
+// cycle changed are its outputs, so two tasks can drive two bits of one byte, and a preempted
+// cycle's half-written outputs do not reach the field before its end.
+// IWYU pragma: private, include <iecoop/runtime/application.hpp>
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstring>
+#include <span>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/meta.hpp>
+#include <iecoop/io/driver.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop::detail {
+
+template <class Store, class Task>
+struct task_programs;
+template <class Store, class... P>
+struct task_programs<Store, task<P...>> {
+  static void run(Store& store) { (store.template get<P>()(), ...); }
+};
+
+/// The cycles of the tasks `Tasks...` (a type_list of task<...>), whose programs live in a
+/// `Store` (get<P>()), over the process image `Image`. A TaskCycles for the scheduler.
+template <class Image, class Store, class Tasks>
+class task_cycles;
+template <class Image, class Store, class... Tasks>
+class task_cycles<Image, Store, type_list<Tasks...>> {
+  static constexpr std::size_t output_bytes = Image::output_bytes;
+  static constexpr std::array<void (*)(Store&), sizeof...(Tasks)> programs_of{&task_programs<Store, Tasks>::run...};
+
+ public:
+  explicit task_cycles(Store& store) noexcept : store_(store) {}
+  task_cycles(const task_cycles&) = delete;
+  task_cycles& operator=(const task_cycles&) = delete;
+
+  /// A cycle of task `index` starts: inputs latched, the cycle clock set, the programs
+  /// called, the outputs they changed staged for the cycle's end.
+  void begin_cycle(std::size_t index, LTIME now) {
+    io_.read_inputs(Image::inputs());
+    cycle_clock::set(now);
+    if constexpr (output_bytes == 0) {
+      programs_of[index](store_);
+    } else {
+      const auto outputs = Image::outputs();
+      std::array<std::byte, output_bytes> before;
+      std::memcpy(before.data(), outputs.data(), output_bytes);
+      programs_of[index](store_);
+      staged_outputs& staged = staged_[index];
+      for (std::size_t b = 0; b < output_bytes; ++b) {
+        staged.value[b] = outputs[b];
+        staged.mask[b] = before[b] ^ outputs[b];
+      }
+    }
+  }
+
+  /// The cycle of task `index` ends: the outputs it changed are published and written.
+  void end_cycle(std::size_t index, LTIME /*now*/) {
+    const staged_outputs& staged = staged_[index];
+    for (std::size_t b = 0; b < output_bytes; ++b) {
+      published_[b] = (published_[b] & ~staged.mask[b]) | (staged.value[b] & staged.mask[b]);
+    }
+    io_.write_outputs(published_);
+  }
+
+  /// Uses `driver` from now on; it must outlive its use.
+  template <IoDriver D>
+  void connect(D& driver) noexcept {
+    io_ = callback_io{[](std::span<std::byte> in, void* d) { static_cast<D*>(d)->read_inputs(in); },
+                      [](std::span<const std::byte> out, void* d) { static_cast<D*>(d)->write_outputs(out); }, &driver};
+  }
+
+  /// The output area as it is now is what goes out with the next cycle's outputs (what the
+  /// instances' construction wrote to %Q: FB_Init, a located output's initial value).
+  void publish_image_outputs() noexcept {
+    if constexpr (output_bytes > 0) std::memcpy(published_.data(), Image::outputs().data(), output_bytes);
+  }
+
+  /// The outputs as last written to the driver (what the field sees).
+  [[nodiscard]] std::span<const std::byte, output_bytes> published() const noexcept { return published_; }
+
+ private:
+  // The outputs one cycle changed, to be written at its end.
+  struct staged_outputs {
+    std::array<std::byte, output_bytes> value{};
+    std::array<std::byte, output_bytes> mask{};
+  };
+
+  Store& store_;
+  std::array<staged_outputs, sizeof...(Tasks)> staged_{};
+  std::array<std::byte, output_bytes> published_{};
+  callback_io io_{};  // the connected driver; without one, nothing is read or written
+};
+
+}  // namespace iecoop::detail
+
+#include <iecoop/detail/pop_macros.hpp>

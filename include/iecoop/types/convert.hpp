@@ -1,0 +1,266 @@
+// SPDX-License-Identifier: MIT
+// iecoop/types/convert.hpp — the one mechanism behind every IEC type conversion: convert<To>(x).
+// <iecoop/standard/conversion_functions.hpp> names it <A>_TO_<B> and TO_<B> for each pair of types.
+//
+// The rules, by kind of type (CODESYS semantics; see docs/porting-guide.md):
+//   integer -> integer   keeps the low bytes (INT_TO_SINT(4223) = 127, DINT_TO_UINT(-1) = 65535)
+//   REAL    -> integer   rounds to nearest, halves away from zero (REAL_TO_INT(-1.5) = -2),
+//                        then keeps the low bytes; NaN gives 0
+//   integer -> REAL      the nearest REAL
+//   x       -> BOOL      x <> 0;   BOOL -> x: 0 or 1
+//   TIME    -> number    milliseconds (LTIME: nanoseconds); number -> TIME likewise
+//   TIME   <-> LTIME     exact widening; LTIME_TO_TIME truncates to whole ms and wraps
+//   x       -> STRING    IEC text: 'TRUE', '-5', '1.5', 'T#1s500ms', 'LTIME#1us'
+//   STRING  -> x         parses that text (surrounding spaces ignored); text that is not a
+//                        valid literal gives 0 / FALSE / T#0ms, as CODESYS does
+//   STRING <-> WSTRING   Latin-1 <-> UCS-2; characters above 255 become '?'
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <type_traits>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/float_to_int.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/literal_text.hpp>
+#include <iecoop/types/string.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/// Any IEC elementary type convert<> handles (IEC ANY_ELEMENTARY, as far as iecoop has it).
+template <class T>
+concept AnyElementary = std::is_same_v<T, BOOL> || AnyInteger<T> || AnyReal<T> || AnyDuration<T> || AnyString<T>;
+
+namespace detail {
+
+/// The IEC type a C++ value stands for when it is passed to a TO_<B> conversion.
+template <class T>
+constexpr auto as_elementary(const T& x) noexcept {
+  if constexpr (AnyElementary<T>) {
+    return x;
+  } else if constexpr (Intermediate<T>) {
+    // An intermediate result converts from its whole register (TO_WORD(w + 1) cuts it).
+    using reg = typename T::rep;
+    if constexpr (std::is_signed_v<reg>) {
+      return integer<reg, integer_kind::signed_int>(x.value());
+    } else {
+      return integer<reg, integer_kind::unsigned_int>(x.value());
+    }
+  } else if constexpr (std::is_same_v<T, bool>) {
+    return BOOL(x);
+  } else if constexpr (std::is_floating_point_v<T>) {
+    return LREAL(x);
+  } else if constexpr (cpp_integer<T> && std::is_signed_v<T>) {
+    return LINT(static_cast<std::int64_t>(x));
+  } else if constexpr (cpp_integer<T>) {
+    return ULINT(static_cast<std::uint64_t>(x));
+  } else {
+    static_assert(dependent_false<T>, "iecoop: no IEC conversion from this type; convert it to an IEC elementary type first");
+    return x;
+  }
+}
+
+/// Rounds a floating value to To's representation, keeping the low bytes of the result.
+template <class Rep, class F>
+constexpr Rep round_to(F x) noexcept {
+  const auto v = static_cast<long double>(x);
+  if constexpr (std::is_same_v<Rep, std::uint64_t>) {
+    // Values between 2^63 and 2^64 need the unsigned range.
+    constexpr long double two63 = 9223372036854775808.0L;
+    if (v >= two63 && v < 2 * two63) return static_cast<std::uint64_t>(v + 0.5L);
+  }
+  return static_cast<Rep>(round_to_int64(v));
+}
+
+constexpr std::string_view trim(std::string_view s) noexcept {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+/// A STRING's text as the value of `To`; 0 / FALSE / T#0ms where it is no valid literal.
+template <class To>
+constexpr To from_text(std::string_view text) noexcept {
+  text = trim(text);
+  if constexpr (std::is_same_v<To, BOOL>) {
+    return parse_bool(text).value_or(FALSE);
+  } else if constexpr (AnyInteger<To>) {
+    const auto whole = parse_integer<To>(text);
+    if (whole) return whole.value_or(To{});
+    // CODESYS accepts a REAL text for integers too ('2.7' -> 3). A number outside To's range
+    // is no valid literal of To: 0, like any invalid text (not its low bytes).
+    if (whole.error() == parse_error::out_of_range || std::is_constant_evaluated()) return To{};
+    const auto real = parse_real<LREAL>(text);
+    if (!real) return To{};
+    using rep = typename To::rep;
+    const long double x = real.value_or(LREAL{}).value();
+    const long double lowest = static_cast<long double>(std::numeric_limits<rep>::min()) - 0.5L;
+    const long double highest = static_cast<long double>(std::numeric_limits<rep>::max()) + 0.5L;
+    if (!(x > lowest && x < highest)) return To{};
+    return To(round_to<rep>(x));
+  } else if constexpr (AnyReal<To>) {
+    if (std::is_constant_evaluated()) return To{};
+    return parse_real<To>(text).value_or(To{});
+  } else if constexpr (std::is_same_v<To, TIME>) {
+    return parse_time(text).value_or(TIME{});
+  } else if constexpr (std::is_same_v<To, LTIME>) {
+    return parse_ltime(text).value_or(LTIME{});
+  }
+}
+
+/// STRING -> WSTRING and back, character by character.
+template <class ToChar, class FromChar>
+constexpr ToChar convert_char(FromChar c) noexcept {
+  if constexpr (sizeof(ToChar) >= sizeof(FromChar)) {
+    return static_cast<ToChar>(static_cast<std::make_unsigned_t<FromChar>>(c));
+  } else {
+    const auto u = static_cast<std::uint32_t>(c);
+    return static_cast<ToChar>(u <= 0xFF ? u : std::uint32_t{'?'});
+  }
+}
+
+}  // namespace detail
+
+/**
+ * Converts an IEC value to the IEC type `To` with IEC (CODESYS) semantics; the rules are
+ * listed at the top of this header. This is what every <A>_TO_<B> and TO_<B> calls.
+ *
+ *     convert<INT>(REAL(2.5))      // 3
+ *     convert<STRING<>>(T#1s500ms) // 'T#1s500ms'
+ */
+template <class To, class From>
+[[nodiscard]] constexpr To convert(const From& from) noexcept {
+  static_assert(AnyElementary<To>, "iecoop: convert<To>: To must be an IEC elementary type (BOOL, INT, REAL, TIME, STRING<N>, ...)");
+  const auto x = detail::as_elementary(from);
+  using X = std::remove_cv_t<decltype(x)>;
+
+  if constexpr (std::is_same_v<To, X>) {
+    return x;
+  } else if constexpr (AnyString<To>) {
+    using C = typename To::char_type;
+    if constexpr (AnyString<X>) {
+      C buffer[To::capacity() + 1]{};
+      std::size_t n = 0;
+      for (auto c : x.view()) {
+        if (n == To::capacity()) break;
+        buffer[n++] = detail::convert_char<C>(c);
+      }
+      return To(std::basic_string_view<C>(buffer, n));
+    } else {
+      char text[max_text_length<X>]{};
+      const char* end = to_text(text, x);
+      C buffer[max_text_length<X>]{};
+      std::size_t n = 0;
+      for (const char* p = text; p != end; ++p) buffer[n++] = static_cast<C>(*p);
+      return To(std::basic_string_view<C>(buffer, n));
+    }
+  } else if constexpr (AnyString<X>) {
+    if constexpr (std::is_same_v<typename X::char_type, char>) {
+      return detail::from_text<To>(x.view());
+    } else {
+      return detail::from_text<To>(convert<STRING<X::capacity()>>(x).view());
+    }
+  } else if constexpr (std::is_same_v<To, BOOL>) {
+    if constexpr (AnyDuration<X>) {
+      return BOOL(x.count() != 0);
+    } else {
+      return BOOL(x.value() != 0);
+    }
+  } else if constexpr (std::is_same_v<X, BOOL>) {
+    if constexpr (AnyDuration<To>) {
+      return To::from_ticks(x ? 1 : 0);
+    } else {
+      return To(static_cast<typename To::rep>(x ? 1 : 0));
+    }
+  } else if constexpr (AnyInteger<To>) {
+    using R = typename To::rep;
+    if constexpr (AnyInteger<X>) {
+      return To(static_cast<R>(x.value()));
+    } else if constexpr (AnyReal<X>) {
+      return To(detail::round_to<R>(x.value()));
+    } else {  // duration
+      return To(static_cast<R>(x.count()));
+    }
+  } else if constexpr (AnyReal<To>) {
+    using R = typename To::rep;
+    if constexpr (AnyDuration<X>) {
+      return To(static_cast<R>(x.count()));
+    } else {
+      return To(static_cast<R>(x.value()));
+    }
+  } else if constexpr (AnyDuration<To>) {
+    using R = typename To::rep;
+    if constexpr (AnyDuration<X>) {
+      return static_cast<To>(x);
+    } else if constexpr (AnyReal<X>) {
+      return To::from_ticks(detail::round_to<R>(x.value()));
+    } else {
+      return To::from_ticks(static_cast<R>(x.value()));
+    }
+  }
+}
+
+/// The function object behind a named conversion <From>_TO_<To>: takes a From (or what
+/// converts to it implicitly, such as a literal) and returns convert<To>(x).
+template <class From, class To>
+struct conversion {
+  constexpr To operator()(From x) const noexcept { return convert<To>(x); }
+  /// An intermediate result of From (or of a type narrower than From) converts from its whole
+  /// register, as the conversion of a temporary result does in CODESYS (INT_TO_DINT(i + 1) is
+  /// 32768 for i = 32767; WORD_TO_BYTE(w + 1) cuts to 8 bits).
+  template <class N>
+    requires(AnyInteger<From> && detail::widens_implicitly<N, From>)
+  constexpr To operator()(intermediate<N> x) const noexcept {
+    return convert<To>(x);
+  }
+};
+/// STRING_TO_<To> and WSTRING_TO_<To> take strings of any capacity and literals.
+template <class C, std::size_t N, class To>
+struct conversion<iec_string<C, N>, To> {
+  template <std::size_t M>
+  constexpr To operator()(const iec_string<C, M>& x) const noexcept {
+    return convert<To>(x);
+  }
+  template <std::size_t M>
+  constexpr To operator()(const C (&literal)[M]) const noexcept {
+    return convert<To>(iec_string<C, M>(literal));
+  }
+};
+
+/// The function object behind the overloaded conversion TO_<To> (IEC 3rd edition):
+/// takes any elementary value.
+template <class To>
+struct to_type {
+  template <class From>
+  constexpr To operator()(const From& x) const noexcept {
+    return convert<To>(x);
+  }
+  template <class C, std::size_t M>
+    requires detail::is_char_v<C>
+  constexpr To operator()(const C (&literal)[M]) const noexcept {
+    return convert<To>(iec_string<C, M>(literal));
+  }
+};
+
+/// TRUNC(x): REAL/LREAL to DINT, truncating toward zero (CODESYS). Out-of-range values
+/// keep the low bytes of the (saturated) 64-bit result; NaN gives 0.
+template <AnyReal R>
+[[nodiscard]] constexpr DINT TRUNC(R x) noexcept {
+  return DINT(static_cast<std::int32_t>(detail::trunc_to_int64(x.value())));
+}
+/// TRUNC_INT(x): like TRUNC, to INT.
+template <AnyReal R>
+[[nodiscard]] constexpr INT TRUNC_INT(R x) noexcept {
+  return INT(static_cast<std::int16_t>(detail::trunc_to_int64(x.value())));
+}
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>
