@@ -218,7 +218,6 @@ LTIME cost_of(std::uint64_t cycle, void* context) {
 template <std::size_t N>
 model_result run_scheduler(const configuration& c) {
   model_result out;
-  recording_cycles cycles{&out.trace};
   std::array<task_settings, N> settings{};
   for (std::size_t i = 0; i < N; ++i) {
     settings[i].kind = c.task[i].kind;
@@ -228,7 +227,7 @@ model_result run_scheduler(const configuration& c) {
     settings[i].watchdog_time = LTIME::from_ticks(c.task[i].watchdog);
     settings[i].watchdog_sensitivity = c.task[i].sensitivity;
   }
-  scheduler<N, recording_cycles> s{cycles, settings};
+  scheduler<N, recording_cycles> s{settings, &out.trace};  // recording_cycles{&out.trace}
   for (std::size_t i = 0; i < N; ++i) s.task(i).model_execution_time(&cost_of, const_cast<task_config*>(&c.task[i]));
   s.start();
   s.run_until(LTIME::from_ticks(run_ns));
@@ -253,6 +252,55 @@ bool same_statistics(const task_statistics& a, const task_statistics& b) {
          a.min_jitter == b.min_jitter && a.max_jitter == b.max_jitter && a.overruns == b.overruns &&
          a.consecutive_overruns == b.consecutive_overruns && a.watchdog_overruns == b.watchdog_overruns &&
          a.consecutive_watchdog_overruns == b.consecutive_watchdog_overruns;
+}
+
+TEST_SUITE("scheduler") {
+  TEST_CASE("settings made at run time are checked at run time") {
+    iecoop_test::fault_recorder faults;
+    std::vector<event_record> trace;
+    std::array<task_settings, 2> settings{};
+    settings[0].priority = 40;                   // above 31
+    settings[0].interval = LTIME(TIME(1));
+    settings[1].interval = LTIME{};              // cyclic without interval
+    scheduler<2, recording_cycles> s{settings, &trace};
+    CHECK(faults.count == 2);
+    CHECK(faults.last_kind == fault_kind::invalid_value);
+    CHECK(s.task(0).priority() == 31);
+    s.start();
+    s.run_until(LTIME(TIME(3)));
+    CHECK(s.task(0).statistics().cycles == 3);   // 0, 1 and 2 ms
+    CHECK(s.task(1).statistics().cycles == 0);   // never released
+    CHECK(s.base_cycle() == LTIME(TIME(1)));
+  }
+
+  TEST_CASE("stepped by hand, as a runner on another clock does") {
+    std::vector<event_record> trace;
+    std::array<task_settings, 2> settings{};
+    settings[0].interval = LTIME(TIME(2));
+    settings[0].priority = 1;
+    settings[1].kind = task_kind::freewheeling;
+    settings[1].priority = 9;
+    scheduler<2, recording_cycles> s{settings, &trace};
+    using S = decltype(s);
+    CHECK(s.pick() == S::no_task);  // halted
+    s.start();
+    s.release_due();
+    REQUIRE(s.pick() == 0);        // the higher priority first
+    s.begin_cycle(0);
+    s.advance_to(LTIME::from_ticks(300'000));
+    s.end_cycle(0);
+    REQUIRE(s.pick() == 1);
+    s.begin_cycle(1);
+    s.advance_to(LTIME::from_ticks(100'000));  // never back
+    CHECK(s.now() == LTIME::from_ticks(300'000));
+    s.advance_to(LTIME::from_ticks(500'000));
+    s.end_cycle(1);
+    CHECK(s.pick() == S::no_task);
+    CHECK(s.next_release() == LTIME(TIME(1)) + LTIME::from_ticks(500'000));  // freewheeling: 1 ms pause at least
+    CHECK(trace == std::vector<event_record>{{true, 0, 0}, {false, 0, 300'000}, {true, 1, 300'000}, {false, 1, 500'000}});
+    CHECK(s.task(0).statistics().last_cycle_time == LTIME::from_ticks(300'000));
+    CHECK(s.task(1).statistics().last_jitter == LTIME::from_ticks(300'000));
+  }
 }
 
 TEST_SUITE("scheduler against a reference model") {

@@ -90,7 +90,7 @@ class application {
   /// The scheduler that runs the tasks.
   using scheduler_type = iecoop::scheduler<config::task_count, cycles_type>;
 
-  explicit application(Entries... entries) : scheduler_(cycles_, config::task_settings_of(entries...)) {
+  explicit application(Entries... entries) : scheduler_(config::task_settings_of(entries...), store_) {
     config::check_located_variables();
   }
   application(const application&) = delete;
@@ -224,7 +224,7 @@ class application {
   /// cycle, the outputs a cycle changed are written at its end. The driver must outlive its use.
   template <IoDriver D>
   void connect(D& driver) noexcept {
-    cycles_.connect(driver);
+    scheduler_.cycles().connect(driver);
   }
 
   /// Saves retained data to `storage` at stop() and reads it at the start() that constructs
@@ -250,7 +250,7 @@ class application {
   void set_freewheeling_load(unsigned percent) noexcept { scheduler_.set_freewheeling_load(percent); }
 
   /// The outputs as last written to the driver (what the field sees).
-  [[nodiscard]] std::span<const std::byte, image::output_bytes> published_outputs() const noexcept { return cycles_.published(); }
+  [[nodiscard]] std::span<const std::byte, image::output_bytes> published_outputs() const noexcept { return scheduler_.cycles().published(); }
 
  private:
   struct storage_binding {
@@ -264,7 +264,7 @@ class application {
     detail::lifecycle_scope initialising({init_retains, false, false, false});
     store_.construct_all();
     constructed_ = true;
-    cycles_.publish_image_outputs();  // what FB_Init wrote to %Q goes out with the first cycle
+    scheduler_.cycles().publish_image_outputs();  // what FB_Init wrote to %Q goes out with the first cycle
   }
 
   void destroy() {
@@ -299,8 +299,7 @@ class application {
   }
 
   store_type store_;
-  cycles_type cycles_{store_};
-  scheduler_type scheduler_;
+  scheduler_type scheduler_;  // with the task_cycles, which call the programs in store_
   std::array<std::byte, retain_bytes> retain_memory_{};
   std::size_t retain_size_ = 0;
   storage_binding storage_{};

@@ -6,7 +6,7 @@
 // (concept TaskCycles): the scheduler calls its begin_cycle(task, now) when a cycle starts
 // and end_cycle(task, now) when it ends.
 //
-//     scheduler<2, my_cycles> s{cycles, {fast_settings, slow_settings}};
+//     scheduler<2, my_cycles> s{{fast_settings, slow_settings}};   // + my_cycles' arguments
 //     s.start();                          // tasks released from now() on
 //     s.run_until("LTIME#1s"_iec);        // simulated: jumps from event to event
 //
@@ -122,8 +122,9 @@ constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept { return b > LTIME::max
 }  // namespace detail
 
 /**
- * The scheduler of `N` tasks whose cycles `Cycles` carries out. Not copyable or movable (it
- * keeps a reference to the cycles); not thread-safe: drive it from one thread.
+ * The scheduler of `N` tasks whose cycles a `Cycles` it holds carries out. Not copyable or
+ * movable (a runner or an application keeps a reference to it); not thread-safe: drive it
+ * from one thread.
  */
 template <std::size_t N, class Cycles>
 class scheduler {
@@ -136,11 +137,13 @@ class scheduler {
   /// The value of pick() when no task is ready.
   static constexpr std::size_t no_task = N;
 
-  /// The tasks `settings`, in configuration order, whose cycles `cycles` carries out. A
-  /// priority above 31 reports fault_kind::invalid_value and is taken as 31; a cyclic task
-  /// without an interval reports it too, and is never released. (task<...>{...} checks both
-  /// while compiling.)
-  scheduler(Cycles& cycles, const std::array<task_settings, N>& settings) noexcept : cycles_(cycles) {
+  /// The tasks `settings`, in configuration order, whose cycles a Cycles made from
+  /// `cycles_arguments` carries out. A priority above 31 reports fault_kind::invalid_value and
+  /// is taken as 31; a cyclic task without an interval reports it too, and is never released.
+  /// (task<...>{...} checks both while compiling.)
+  template <class... Args>
+  explicit scheduler(const std::array<task_settings, N>& settings, Args&&... cycles_arguments) noexcept
+      : cycles_{static_cast<Args&&>(cycles_arguments)...} {
     for (std::size_t i = 0; i < N; ++i) {
       task_settings s = settings[i];
       if (s.priority > 31) {
@@ -156,6 +159,10 @@ class scheduler {
   }
   scheduler(const scheduler&) = delete;
   scheduler& operator=(const scheduler&) = delete;
+
+  /// The object that carries out the cycles.
+  [[nodiscard]] Cycles& cycles() noexcept { return cycles_; }
+  [[nodiscard]] const Cycles& cycles() const noexcept { return cycles_; }
 
   // --- State ------------------------------------------------------------------------
 
@@ -209,9 +216,9 @@ class scheduler {
       process_instant();
       const LTIME next = next_instant();
       if (next >= until || state_ != scheduler_state::running) break;
-      advance_to(next);
+      move_clock(next);  // next > now_: something happens at every instant
     }
-    advance_to(until);
+    move_clock(until);
   }
 
   /// run_until(now() + duration).
@@ -233,37 +240,16 @@ class scheduler {
   /// Moves the clock forward to `t` (never back); the cycle run_until() left running uses up
   /// the time passed.
   void advance_to(LTIME t) noexcept {
-    if (t <= now_) return;
-    if (running_ != no_task) {
-      task_state& r = tasks_[running_];
-      const LTIME spent = t - now_;
-      r.remaining_ = spent < r.remaining_ ? r.remaining_ - spent : LTIME{};
-    }
-    now_ = t;
+    if (t > now_) move_clock(t);
   }
 
   /// Releases, at now(), every cyclic or freewheeling task that is due and every event task
   /// whose condition rose. A release that finds the previous cycle unfinished is skipped (an
   /// overrun); the releases a cyclic task missed while late are omitted and counted.
   void release_due() {
-    if (state_ != scheduler_state::running) return;
-    for (task_state& t : tasks_) {
-      if (t.settings_.kind == task_kind::event || t.next_release_ > now_) continue;
-      release(index_of(t), t.next_release_);
-      if (t.settings_.kind == task_kind::cyclic) {
-        t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
-        if (t.next_release_ <= now_) {  // releases missed while late: omitted
-          const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
-          t.statistics_.overruns += missed;
-          t.statistics_.consecutive_overruns += static_cast<std::uint32_t>(missed);
-          t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
-        }
-      } else {
-        t.next_release_ = LTIME::max();  // freewheeling: released again when the cycle ends
-      }
-    }
-    sample_events();
+    if (state_ == scheduler_state::running) release_due_now();
   }
+
 
   /// The task that gets the processor: the highest priority among those released or under
   /// way; among equals, the one under way before those released, then the earlier release,
@@ -346,6 +332,36 @@ class scheduler {
   void set_freewheeling_load(unsigned percent) noexcept { freewheeling_load_ = percent == 0 ? 1 : percent; }
 
  private:
+  // release_due() while running.
+  void release_due_now() {
+    for (task_state& t : tasks_) {
+      if (t.settings_.kind == task_kind::event || t.next_release_ > now_) continue;
+      release(index_of(t), t.next_release_);
+      if (t.settings_.kind == task_kind::cyclic) {
+        t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
+        if (t.next_release_ <= now_) {  // releases missed while late: omitted
+          const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
+          t.statistics_.overruns += missed;
+          t.statistics_.consecutive_overruns += static_cast<std::uint32_t>(missed);
+          t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
+        }
+      } else {
+        t.next_release_ = LTIME::max();  // freewheeling: released again when the cycle ends
+      }
+    }
+    sample_events();
+  }
+
+  // The clock moves forward to t > now_; the cycle left running uses up the time passed.
+  void move_clock(LTIME t) noexcept {
+    if (running_ != no_task) {
+      task_state& r = tasks_[running_];
+      const LTIME spent = t - now_;
+      r.remaining_ = spent < r.remaining_ ? r.remaining_ - spent : LTIME{};
+    }
+    now_ = t;
+  }
+
   static std::size_t checked_index(std::size_t index) noexcept {
     if (index < N) return index;
     fault(fault_kind::invalid_value, "no task at this index in the application; the first task stands in");
@@ -433,7 +449,7 @@ class scheduler {
       end_cycle(done);
     }
     if (state_ != scheduler_state::running) return;
-    release_due();
+    release_due_now();
     while (state_ == scheduler_state::running) {
       const std::size_t next = ready_.pick();
       if (next == no_task) break;
@@ -461,7 +477,7 @@ class scheduler {
     return end < release ? end : release;
   }
 
-  Cycles& cycles_;
+  Cycles cycles_;
   std::array<task_state, N> tasks_{};
   detail::ready_queues<N> ready_{};
   LTIME now_{};
