@@ -6,6 +6,6 @@ cd "$(dirname "$0")/.."
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ libfmt-dev
 
-cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_BENCH=OFF >/dev/null
+cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DIECOOP_BUILD_EXAMPLES=ON -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_BENCH=OFF >/dev/null
 cmake --build build/demo --target iecoop_demo -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 exec ./build/demo/examples/iecoop_demo "$@"

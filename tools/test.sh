@@ -32,7 +32,8 @@ run() {
   compiler=$2
   shift 2
   echo "== iecoop: $name"
-  cmake -S . -B "build/$name" -DCMAKE_CXX_COMPILER="$compiler" -DIECOOP_WERROR=ON -DIECOOP_BUILD_CHECK=ON "$@"
+  cmake -S . -B "build/$name" -DCMAKE_CXX_COMPILER="$compiler" -DIECOOP_WERROR=ON -DIECOOP_BUILD_CHECK=ON \
+    -DIECOOP_BUILD_TESTS=ON -DIECOOP_BUILD_EXAMPLES=ON -DIECOOP_BUILD_BENCH=ON -DIECOOP_BUILD_TOOLS=ON "$@"
   cmake --build "build/$name" -j "$jobs"
   ctest --test-dir "build/$name" -j "$jobs" --output-on-failure
 }
