@@ -14,7 +14,7 @@ namespace {
 // An image of its own, so that no other test's values leak in.
 struct io_test_tag {};
 using image = process_image<8, 8, 8, addressing::codesys, io_test_tag>;
-template <class T, detail::fixed_string A>
+template <class T, fixed_string A>  // iecoop::fixed_string: a literal as a template argument
 using at_ = located<T, A, image>;
 
 // PROGRAM LATCH_PRG: copies a start button to a motor output and counts the cycles it saw

@@ -515,3 +515,37 @@ TEST_SUITE("application: review regressions") {
     CHECK(faults.count == 1);
   }
 }
+
+namespace {
+// The application's type named: an alias of the entries' types, or a class of its own that
+// keeps the task configuration inside (where `task` alone names the member function
+// application::task, so the entry is spelled iecoop::task).
+using fast_slow = application<task<FAST_PRG>, task<SLOW_PRG>>;
+struct fast_slow_plc : fast_slow {
+  fast_slow_plc()
+      : fast_slow{iecoop::task<FAST_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0},
+                  iecoop::task<SLOW_PRG>{"Slow", cyclic{"T#5ms"_iec}, 1}} {}
+};
+template <class Plc>
+void run_ten_ms(Plc& plc) { plc.run_for(ms(10)); }
+void run_ten_ms_named(fast_slow& plc) { run_ten_ms(plc); }
+}  // namespace
+
+TEST_SUITE("application: a named application type") {
+  TEST_CASE("a class derived from application is passed around like any other") {
+    trace.clear();
+    fast_slow_plc plc;
+    REQUIRE(plc.start());
+    run_ten_ms(plc);
+    CHECK(plc.task("Fast").statistics().cycles == 10);
+    CHECK(plc.task("Slow").statistics().cycles == 2);
+    CHECK(plc.get<SLOW_PRG>().nCalls == 2U);
+    CHECK(trace.substr(0, 3) == "FSF");
+  }
+  TEST_CASE("an alias of the entries' types names it where it is built") {
+    fast_slow plc{task<FAST_PRG>{"Fast", cyclic{"T#2ms"_iec}, 0}, task<SLOW_PRG>{"Slow", cyclic{"T#5ms"_iec}, 1}};
+    REQUIRE(plc.start());
+    run_ten_ms_named(plc);
+    CHECK(plc.task("Fast").statistics().cycles == 5);
+  }
+}

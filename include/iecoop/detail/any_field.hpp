@@ -11,7 +11,7 @@ namespace iecoop::detail {
 /// only so that compilers do not warn about an undefined function, and is never run.
 struct any_field {
   template <class T>
-  operator T&() const noexcept {  // NOLINT: implicit on purpose
+  operator T&() const noexcept {  // implicit: implicit on purpose
     __builtin_trap();
   }
 };

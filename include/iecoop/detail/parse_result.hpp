@@ -24,7 +24,7 @@ namespace iecoop {
 template <class T, class Error>
 class basic_parse_result {
  public:
-  constexpr basic_parse_result(T value) noexcept : value_(value) {}  // NOLINT: a value is a result
+  constexpr basic_parse_result(T value) noexcept : value_(value) {}  // implicit: a value is a result
   constexpr basic_parse_result(Error error, std::size_t position) noexcept : error_(error), position_(position) {}
 
   [[nodiscard]] constexpr bool has_value() const noexcept { return error_ == Error::none; }

@@ -122,7 +122,7 @@ template <class Derived, class T>
 struct condition_conversion {};
 template <class Derived>
 struct condition_conversion<Derived, BOOL> {
-  constexpr operator bool() const {  // NOLINT: a BOOL is a condition
+  constexpr operator bool() const {  // implicit: a BOOL is a condition
     return static_cast<bool>(static_cast<const Derived&>(*this).get());
   }
 };
@@ -144,7 +144,7 @@ template <class Derived, class T>
 struct widening_conversion<Derived, T> {
   template <class U>
     requires(is_iec_value<U>::value && !std::is_same_v<U, T> && std::is_convertible_v<const T&, U>)
-  constexpr operator U() const {  // NOLINT: reads as the variable
+  constexpr operator U() const {  // implicit: reads as the variable
     return static_cast<const Derived&>(*this).get();
   }
 };

@@ -439,7 +439,7 @@ class located : public detail::condition_conversion<located<T, Address, Image>, 
       return T{};
     }
   }
-  operator T() const noexcept { return get(); }  // NOLINT: reads as the variable
+  operator T() const noexcept { return get(); }  // implicit: reads as the variable
 
   /// Writes the value to the process image (%Q and %M only). A non-template operand, so that
   /// constants convert as in any assignment (`iCount = 5;`).

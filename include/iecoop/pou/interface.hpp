@@ -245,14 +245,14 @@ class itf {
   using interface_type = I;
 
   constexpr itf() noexcept = default;
-  constexpr itf(std::nullptr_t) noexcept {}  // NOLINT: x := 0
+  constexpr itf(std::nullptr_t) noexcept {}  // implicit: x := 0
   /// Refers to a block implementing I: `x = fbInstance;`
   template <class T>
     requires(std::derived_from<T, I>)
-  constexpr itf(T& block) noexcept : target_(&block) {}  // NOLINT: ST assigns instances to interface variables
+  constexpr itf(T& block) noexcept : target_(&block) {}  // implicit: ST assigns instances to interface variables
   template <class T>
     requires(!std::derived_from<T, I> && !detail::is_interface_variable<std::remove_cv_t<T>>)
-  itf(T&) {  // NOLINT
+  itf(T&) {  // implicit on purpose
     static_assert(detail::dependent_false<T>,
                   "iecoop: this block does not implement the interface; declare it "
                   "`struct FB : function_block<FB, implements<I>>` (or EXTENDS a block that does)");
@@ -260,7 +260,7 @@ class itf {
   /// From a variable of an interface that extends I.
   template <class J>
     requires(std::derived_from<J, I> && !std::is_same_v<J, I>)
-  constexpr itf(const itf<J>& other) noexcept : target_(other.get()) {}  // NOLINT
+  constexpr itf(const itf<J>& other) noexcept : target_(other.get()) {}  // implicit on purpose
 
   /// The interface of the block referred to; an unassigned variable is a fault.
   I* operator->() const { return &checked(); }

@@ -162,12 +162,12 @@ class args : public Vars {
 
   /// No arguments: every variable at its declared initial value.
   constexpr args() : Vars() {}
-  constexpr args(const Vars& vars) : Vars(vars) {}  // NOLINT: the variables, filled elsewhere
+  constexpr args(const Vars& vars) : Vars(vars) {}  // implicit: the variables, filled elsewhere
 
   /// Arguments positionally (in declaration order), then named in any order.
   template <class... A>
     requires(sizeof...(A) > 0 && !(sizeof...(A) == 1 && (std::is_base_of_v<Vars, std::remove_cvref_t<A>> && ...)))
-  constexpr args(A&&... arguments) : Vars() {  // NOLINT: a call's argument list
+  constexpr args(A&&... arguments) : Vars() {  // implicit: a call's argument list
     if constexpr (!detail::arguments_valid<Vars, A...>()) {
       detail::report_invalid_arguments<Vars, A...>();
     } else {
@@ -270,7 +270,7 @@ class function {
                 "parameter of type args<Vars>: [](args<F_vars> in) -> R { ... }");
 
  public:
-  constexpr function(Impl impl) noexcept : impl_(impl) {}  // NOLINT: `function F = [](args<V>) {...};`
+  constexpr function(Impl impl) noexcept : impl_(impl) {}  // implicit: `function F = [](args<V>) {...};`
 
   template <class... A>
   constexpr decltype(auto) operator()(A&&... arguments) const {

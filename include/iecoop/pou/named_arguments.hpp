@@ -39,7 +39,7 @@ struct param_name {
   static constexpr std::string_view name{Name.chars, Name.size};
 
   template <class V>
-  constexpr named_input<Name, V> operator=(V&& value) const noexcept {  // NOLINT: ST's :=
+  constexpr named_input<Name, V> operator=(V&& value) const noexcept {  // implicit: ST's :=
     return named_input<Name, V>{std::forward<V>(value)};
   }
   template <class T>

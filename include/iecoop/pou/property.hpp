@@ -186,12 +186,12 @@ class property {
   // (`T Name_Get() const`) is called as const (see read() const).
 
   /// Reading the property calls Get (`iVar = fbA.prop_iA;`).
-  operator T()  // NOLINT: reads as the variable
+  operator T()  // implicit: reads as the variable
     requires(!owner_get)
   {
     return read();
   }
-  operator T() const  // NOLINT
+  operator T() const  // implicit on purpose
     requires(!owner_get)
   {
     return read();
@@ -199,12 +199,12 @@ class property {
   /// ... also where T converts on without narrowing (`LREAL x = fb.rProp;` for a REAL property).
   template <class U>
     requires(!owner_get && detail::widens_to<T, U>)
-  operator U() {  // NOLINT
+  operator U() {  // implicit on purpose
     return read();
   }
   template <class U>
     requires(!owner_get && detail::widens_to<T, U>)
-  operator U() const {  // NOLINT
+  operator U() const {  // implicit on purpose
     return read();
   }
   /// `IF fb.bProp THEN`
@@ -307,12 +307,12 @@ class property {
   }
 
   // The accessors for the owner only (owner_only_get / owner_only_set).
-  operator T()  // NOLINT
+  operator T()  // implicit on purpose
     requires(owner_get)
   {
     return read();
   }
-  operator T() const  // NOLINT
+  operator T() const  // implicit on purpose
     requires(owner_get)
   {
     return read();

@@ -93,7 +93,7 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
   using value_type = T;
   using iecoop_value_wrapper = void;  // in expressions, its value (detail/value_operators.hpp)
 
-  constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
+  constexpr operator const T&() const noexcept { return value_; }  // implicit: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   /// `pos->x` for a STRUCT, `ip->M()` for an interface variable.
   constexpr decltype(auto) operator->() const noexcept { return arrow_of(value_); }
@@ -292,7 +292,7 @@ class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_
     if (target_ == nullptr) return unbound();
     return *target_;
   }
-  constexpr operator T&() const { return get(); }  // NOLINT: reads as the variable
+  constexpr operator T&() const { return get(); }  // implicit: reads as the variable
   /// `r->x` for a STRUCT, `ip->M()` for an interface variable.
   constexpr decltype(auto) operator->() const { return detail::arrow_of(get()); }
   /// An element of an ARRAY (`a[i]`).
@@ -398,7 +398,7 @@ class output : public detail::condition_conversion<output<T>, T>, public detail:
   constexpr void operator=(const V&) {
     detail::reject_value<T, V>();
   }
-  constexpr operator const T&() const noexcept { return value_; }  // NOLINT: reads as the variable
+  constexpr operator const T&() const noexcept { return value_; }  // implicit: reads as the variable
   [[nodiscard]] constexpr const T& get() const noexcept { return value_; }
   constexpr T& ref() noexcept { return value_; }
   constexpr decltype(auto) operator->() const noexcept { return detail::arrow_of(value_); }

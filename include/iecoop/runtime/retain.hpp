@@ -64,7 +64,7 @@ enum class retain_kind : std::uint8_t {
 class retain_kinds {
  public:
   constexpr retain_kinds() noexcept = default;
-  // NOLINTNEXTLINE(google-explicit-constructor): a kind is a set of one
+  // implicit: a kind is a set of one
   constexpr retain_kinds(retain_kind kind) noexcept : bits_(static_cast<std::uint8_t>(kind)) {}
 
   static const retain_kinds none;        ///< nothing

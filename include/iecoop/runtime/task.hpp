@@ -56,8 +56,8 @@ enum class task_kind : std::uint8_t {
 
 /// Type "Cyclic" with its interval (ST: INTERVAL := T#10ms), a TIME or LTIME greater than zero.
 struct cyclic {
-  constexpr cyclic(TIME every) noexcept : interval(every) {}  // NOLINT: reads as the configuration
-  constexpr cyclic(LTIME every) noexcept : interval(every) {}  // NOLINT
+  constexpr cyclic(TIME every) noexcept : interval(every) {}  // implicit: reads as the configuration
+  constexpr cyclic(LTIME every) noexcept : interval(every) {}  // implicit on purpose
   LTIME interval;
 };
 

@@ -84,7 +84,7 @@ class cycle_clock {
 /// its running clock at each call).
 struct system_time_t {
   template <class Rep, class Period>
-  constexpr operator basic_time<Rep, Period>() const noexcept {  // NOLINT: TIME(system_time)
+  constexpr operator basic_time<Rep, Period>() const noexcept {  // implicit: TIME(system_time)
     return cycle_clock::now_as<basic_time<Rep, Period>>();
   }
 };

@@ -156,7 +156,7 @@ class BOOL {
  public:
   constexpr BOOL() noexcept = default;
   template <std::same_as<bool> B>
-  constexpr BOOL(B value) noexcept : value_(value) {}  // NOLINT: implicit like ST's assignment
+  constexpr BOOL(B value) noexcept : value_(value) {}  // implicit: implicit like ST's assignment
 
   /// `b = x > 3;` stores the bool as it is (the same as `b = BOOL(x > 3)`, but a plain
   /// store of the member: see detail/scalar_access.hpp).
@@ -167,7 +167,7 @@ class BOOL {
   }
 
   /// A condition: `if (b)`, `while (!b)`, `bool ok = b;`.
-  constexpr operator bool() const noexcept { return value_; }  // NOLINT: a BOOL is a condition
+  constexpr operator bool() const noexcept { return value_; }  // implicit: a BOOL is a condition
 
   // The operands are references: a BOOL passed by value is, for GCC 12, a byte copied as
   // `unsigned char`, which may alias anything and so keeps a loop's variables in memory.
@@ -527,14 +527,14 @@ class integer {
   /// From a C++ integer whose every value fits: implicit, at run time too.
   template <detail::cpp_integer T>
     requires detail::range_within<T, Rep>
-  constexpr integer(T value) noexcept : value_(static_cast<Rep>(value)) {}  // NOLINT
+  constexpr integer(T value) noexcept : value_(static_cast<Rep>(value)) {}  // implicit on purpose
 
   /// From a C++ integer constant of a wider type (`INT x = 5;`): checked at compile time.
   /// A run-time value of a wider C++ type needs an explicit IEC conversion instead, e.g.
   /// DINT_TO_INT(n).
   template <detail::cpp_integer T>
     requires(!detail::range_within<T, Rep>)
-  consteval integer(T constant) : value_(static_cast<Rep>(constant)) {  // NOLINT
+  consteval integer(T constant) : value_(static_cast<Rep>(constant)) {  // implicit on purpose
     if (!std::in_range<Rep>(constant)) {
       detail::compile_error("iecoop: integer constant out of range for this IEC type; use a wider type or an explicit conversion");
     }
@@ -744,10 +744,10 @@ class intermediate {
 
   constexpr intermediate() noexcept = default;
   /// The value of a variable of type T.
-  constexpr intermediate(T value) noexcept : value_(detail::in_register<T>(value)) {}  // NOLINT: a value is an expression
+  constexpr intermediate(T value) noexcept : value_(detail::in_register<T>(value)) {}  // implicit: a value is an expression
   /// A C++ integer constant in an expression (`(i + 1) * 2`): checked against T while compiling.
   template <detail::cpp_integer C>
-  consteval intermediate(C constant) : value_(static_cast<rep>(constant)) {  // NOLINT
+  consteval intermediate(C constant) : value_(static_cast<rep>(constant)) {  // implicit on purpose
     if (!std::in_range<typename T::rep>(constant)) {
       detail::compile_error("iecoop: integer constant out of range for this IEC type; use a wider type or an explicit conversion");
     }
@@ -765,7 +765,7 @@ class intermediate {
   /// To T, or a type T widens to implicitly: the register's low bits (as an assignment in ST).
   template <class U>
     requires(detail::is_integer<U>::value && detail::widens_implicitly<T, U>)
-  constexpr operator U() const noexcept {  // NOLINT: ST assigns an expression to its variable
+  constexpr operator U() const noexcept {  // implicit: ST assigns an expression to its variable
     return U(static_cast<typename U::rep>(value_));
   }
   /// To another integer type: explicit (keeps the low bits, like DINT_TO_INT).
@@ -777,7 +777,7 @@ class intermediate {
   /// To REAL or LREAL where T converts implicitly: the register's value (no cut).
   template <class R>
     requires std::is_convertible_v<T, real<R>>
-  constexpr operator real<R>() const noexcept {  // NOLINT
+  constexpr operator real<R>() const noexcept {  // implicit on purpose
     return real<R>(static_cast<R>(value_));
   }
   /// To a C++ arithmetic type (not bool): explicit.
@@ -1097,7 +1097,7 @@ class real {
   /// From C++ numbers (`REAL r = 1.5;`, `LREAL x = n;`).
   template <class T>
     requires(std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
-  constexpr real(T value) noexcept : value_(static_cast<Rep>(value)) {}  // NOLINT
+  constexpr real(T value) noexcept : value_(static_cast<Rep>(value)) {}  // implicit on purpose
   /// From a narrower floating type: REAL -> LREAL is implicit; LREAL -> REAL explicit.
   template <class R>
     requires(!std::is_same_v<R, Rep>)
@@ -1105,7 +1105,7 @@ class real {
   /// From IEC integers the type represents exactly (INT -> REAL, DINT -> LREAL).
   template <class R, integer_kind K>
     requires(K != integer_kind::bit_string && std::numeric_limits<R>::digits <= std::numeric_limits<Rep>::digits)
-  constexpr real(integer<R, K> value) noexcept : value_(static_cast<Rep>(value.value())) {}  // NOLINT
+  constexpr real(integer<R, K> value) noexcept : value_(static_cast<Rep>(value.value())) {}  // implicit on purpose
 
   /// Assigning a value of another IEC type that does not convert implicitly (`r = l;` for an
   /// LREAL, `r = i * 2.5;`, `r = b;` for a BOOL): rejected, naming the conversion to write.
@@ -1120,7 +1120,7 @@ class real {
     detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>, detail::spelled_iec_name_t<real>>();
   }
 
-  constexpr operator Rep() const noexcept { return value_; }  // NOLINT: behaves as its float
+  constexpr operator Rep() const noexcept { return value_; }  // implicit: behaves as its float
   [[nodiscard]] constexpr Rep value() const noexcept { return value_; }
 
   // `r += v` is ST's `r := r + v`: v a REAL of this width or narrower, an integer the type

@@ -67,17 +67,17 @@ class iec_string {
   constexpr iec_string() noexcept = default;
 
   /// From a NUL-terminated string; nullptr gives the empty string.
-  constexpr iec_string(const CharT* text) noexcept { assign(text); }  // NOLINT: like ST's assignment
+  constexpr iec_string(const CharT* text) noexcept { assign(text); }  // implicit: like ST's assignment
   /// From literals, std::basic_string, std::basic_string_view: keeps the first N characters.
   template <detail::string_like<CharT> S>
     requires(!std::is_pointer_v<S>)
-  constexpr iec_string(const S& text) noexcept {  // NOLINT
+  constexpr iec_string(const S& text) noexcept {  // implicit on purpose
     assign(view_type(text));
   }
   /// From a string of another capacity: keeps the first N characters.
   template <std::size_t M>
     requires(M != N)
-  constexpr iec_string(const iec_string<CharT, M>& other) noexcept {  // NOLINT
+  constexpr iec_string(const iec_string<CharT, M>& other) noexcept {  // implicit on purpose
     assign(other.view());
   }
 
@@ -101,7 +101,7 @@ class iec_string {
   [[nodiscard]] constexpr const CharT* data() const noexcept { return chars_; }
   [[nodiscard]] constexpr const CharT* c_str() const noexcept { return chars_; }
   [[nodiscard]] constexpr view_type view() const noexcept { return view_type(chars_, size()); }
-  constexpr operator view_type() const noexcept { return view(); }  // NOLINT: a string is its text
+  constexpr operator view_type() const noexcept { return view(); }  // implicit: a string is its text
 
   [[nodiscard]] constexpr const CharT* begin() const noexcept { return chars_; }
   [[nodiscard]] constexpr const CharT* end() const noexcept { return chars_ + size(); }

@@ -65,7 +65,7 @@ class basic_time {
   /// An integer constant counts ticks (TIME: milliseconds), as `PT := 300` does in CODESYS.
   /// Checked at compile time: it must be a non-negative constant that fits.
   template <detail::cpp_integer T>
-  consteval basic_time(T ticks) : value_(static_cast<Rep>(ticks)) {  // NOLINT
+  consteval basic_time(T ticks) : value_(static_cast<Rep>(ticks)) {  // implicit on purpose
     if (!std::in_range<Rep>(ticks)) {
       detail::compile_error("iecoop: duration constant out of range (TIME and LTIME are unsigned); use a T# literal or a std::chrono duration");
     }
@@ -76,7 +76,7 @@ class basic_time {
   /// operation. Convert finer durations with std::chrono::duration_cast first.
   template <std::integral R, class P>
     requires(std::ratio_divide<P, Period>::den == 1)
-  constexpr basic_time(std::chrono::duration<R, P> d) noexcept  // NOLINT
+  constexpr basic_time(std::chrono::duration<R, P> d) noexcept  // implicit on purpose
       : value_(static_cast<Rep>(static_cast<std::uint64_t>(d.count()) *
                                 static_cast<std::uint64_t>(std::ratio_divide<P, Period>::num))) {}
 
@@ -92,7 +92,7 @@ class basic_time {
   /// as there, the range is yours to watch).
   template <class R, class P>
     requires(std::is_floating_point_v<R> || (std::integral<R> && std::ratio_divide<Period, P>::den == 1))
-  constexpr operator std::chrono::duration<R, P>() const noexcept {  // NOLINT
+  constexpr operator std::chrono::duration<R, P>() const noexcept {  // implicit on purpose
     return std::chrono::duration_cast<std::chrono::duration<R, P>>(chrono_type(value_));
   }
 
