@@ -77,12 +77,16 @@ const kernel all_kernels[] = {
     {"workload_handwritten", workload_scans<handwritten_scan>},
     {"workload_handwritten_minimal", workload_scans<minimal_scan>},
     {"property_iecoop", [](std::uint64_t n) { repeat<FB_Prop>(n, [](FB_Prop& fb) { property_iecoop(fb); }); }},
-    {"property_handwritten", [](std::uint64_t n) { repeat<plain_prop>(n, [](plain_prop& s) { property_handwritten(s); }); }},
+    {"property_handwritten",
+     [](std::uint64_t n) { repeat<plain_prop>(n, [](plain_prop& s) { property_handwritten(s); }); }},
     {"method_iecoop", [](std::uint64_t n) { repeat<FB_Scale>(n, [](FB_Scale& fb) { (void)method_iecoop(fb); }); }},
-    {"method_handwritten", [](std::uint64_t n) { repeat<plain_scale>(n, [](plain_scale& s) { (void)method_handwritten(s); }); }},
+    {"method_handwritten",
+     [](std::uint64_t n) { repeat<plain_scale>(n, [](plain_scale& s) { (void)method_handwritten(s); }); }},
     {"fbcall_iecoop", [](std::uint64_t n) { repeat<FB_Add>(n, [](FB_Add& fb) { (void)fbcall_iecoop(fb, INT(1)); }); }},
-    {"fbcall_handwritten", [](std::uint64_t n) { repeat<plain_add>(n, [](plain_add& s) { (void)fbcall_handwritten(s, INT(1)); }); }},
-    {"interface_iecoop", [](std::uint64_t n) {
+    {"fbcall_handwritten",
+     [](std::uint64_t n) { repeat<plain_add>(n, [](plain_add& s) { (void)fbcall_handwritten(s, INT(1)); }); }},
+    {"interface_iecoop",
+     [](std::uint64_t n) {
        FB_MathMen fb;
        itf<I_Math> ip = fb;
        for (std::uint64_t i = 0; i < n; ++i) {
@@ -90,7 +94,8 @@ const kernel all_kernels[] = {
          (void)interface_iecoop(ip);
        }
      }},
-    {"interface_virtual", [](std::uint64_t n) {
+    {"interface_virtual",
+     [](std::uint64_t n) {
        plain_math m;
        plain_math_base* b = &m;
        for (std::uint64_t i = 0; i < n; ++i) {
@@ -98,7 +103,8 @@ const kernel all_kernels[] = {
          (void)interface_virtual(*b);
        }
      }},
-    {"interface_direct", [](std::uint64_t n) {
+    {"interface_direct",
+     [](std::uint64_t n) {
        plain_math m;
        plain_math* p = &m;
        for (std::uint64_t i = 0; i < n; ++i) {

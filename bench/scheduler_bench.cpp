@@ -32,7 +32,8 @@ void BM_SimulatedHour_1msTask_100Blocks(benchmark::State& state) {
   }
   const auto cycles = static_cast<double>(plc.task(0).statistics().cycles);
   state.counters["task_cycles"] = cycles;
-  state.counters["ns_per_task_cycle"] = benchmark::Counter(cycles, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_task_cycle"] =
+      benchmark::Counter(cycles, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["simulated_cycles_per_s"] = benchmark::Counter(cycles, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SimulatedHour_1msTask_100Blocks)->Unit(benchmark::kMillisecond)->Iterations(3);
@@ -50,7 +51,8 @@ void BM_SimulatedHour_1msLoop_100Blocks(benchmark::State& state) {
   }
   const auto cycles = static_cast<double>(cycles_per_hour) * static_cast<double>(state.iterations());
   state.counters["task_cycles"] = cycles;
-  state.counters["ns_per_task_cycle"] = benchmark::Counter(cycles, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_task_cycle"] =
+      benchmark::Counter(cycles, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["simulated_cycles_per_s"] = benchmark::Counter(cycles, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SimulatedHour_1msLoop_100Blocks)->Unit(benchmark::kMillisecond)->Iterations(3);
@@ -61,7 +63,8 @@ void BM_TaskCycle(benchmark::State& state) {
   plc.start();
   for (auto _ : state) plc.run_for("T#1ms"_iec);
   state.counters["ns_per_task_cycle"] =
-      benchmark::Counter(static_cast<double>(N) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+      benchmark::Counter(static_cast<double>(N) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_TaskCycle<1>);
 BENCHMARK(BM_TaskCycle<8>);
@@ -72,7 +75,8 @@ void BM_TaskCycle_handwritten(benchmark::State& state) {
   handwritten_executive<N> executive;
   for (auto _ : state) executive.run_for(1'000'000);
   state.counters["ns_per_task_cycle"] =
-      benchmark::Counter(static_cast<double>(N) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+      benchmark::Counter(static_cast<double>(N) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_TaskCycle_handwritten<1>);
 BENCHMARK(BM_TaskCycle_handwritten<8>);

@@ -32,7 +32,8 @@ void BM_Workload_iecoop(benchmark::State& state) {
   run_workload(state, checked, iecoop_side::reset, iecoop_side::scan, iecoop_side::read);
 }
 void BM_Workload_handwritten(benchmark::State& state) {
-  static const bool checked = cross_check(handwritten_side::reset, handwritten_side::scan, handwritten_side::read);  // once per run
+  static const bool checked =
+      cross_check(handwritten_side::reset, handwritten_side::scan, handwritten_side::read);  // once per run
   run_workload(state, checked, handwritten_side::reset, handwritten_side::scan, handwritten_side::read);
 }
 void BM_Workload_handwritten_minimal(benchmark::State& state) {

@@ -39,22 +39,22 @@ struct WORKLOAD_PRG : program<WORKLOAD_PRG> {
   INT PH;
 
   void body() {
-    CYC = (CYC + 1) % 24000;                                  // CYC := (CYC + 1) MOD 24000;
-    NTON = 0;                                                 // NTON := 0;
-    NCTU = 0;                                                 // NCTU := 0;
-    NEDGE = 0;                                                // NEDGE := 0;
-    for (INT K = 0; K <= 999; ++K) {                          // FOR K := 0 TO 999 DO
+    CYC = (CYC + 1) % 24000;          // CYC := (CYC + 1) MOD 24000;
+    NTON = 0;                         // NTON := 0;
+    NCTU = 0;                         // NCTU := 0;
+    NEDGE = 0;                        // NEDGE := 0;
+    for (INT K = 0; K <= 999; ++K) {  // FOR K := 0 TO 999 DO
       CELL& cell = CELLS[static_cast<std::size_t>(K)];
-      PH = (CYC + K) % 20;                                    //   PH := (CYC + K) MOD 20;
-      cell.T("IN"_ = PH < 15, "PT"_ = "T#50ms"_iec);          //   CELLS[K].T(IN := PH < 15, PT := T#50ms);
-      if (cell.T.Q) NTON = NTON + 1;                          //   IF CELLS[K].T.Q THEN NTON := NTON + 1; END_IF;
-      cell.C("CU"_ = PH % 4 < 2,                              //   CELLS[K].C(CU := (PH MOD 4) < 2,
-             "R"_ = (CYC + K) % 500 == 0, "PV"_ = 50);        //              R := ((CYC + K) MOD 500) = 0, PV := 50);
-      if (cell.C.Q) NCTU = NCTU + 1;                          //   IF CELLS[K].C.Q THEN NCTU := NCTU + 1; END_IF;
-      cell.E("CLK"_ = (CYC + 3 * K) % 6 < 3);                 //   CELLS[K].E(CLK := ((CYC + 3 * K) MOD 6) < 3);
-      if (cell.E.Q) NEDGE = NEDGE + 1;                        //   IF CELLS[K].E.Q THEN NEDGE := NEDGE + 1; END_IF;
-      ACC = (ACC * 3 + K * 3 - PH) % 8191;                    //   ACC := (ACC * 3 + K * 3 - PH) MOD 8191;
-    }                                                         // END_FOR
+      PH = (CYC + K) % 20;                              //   PH := (CYC + K) MOD 20;
+      cell.T("IN"_ = PH < 15, "PT"_ = "T#50ms"_iec);    //   CELLS[K].T(IN := PH < 15, PT := T#50ms);
+      if (cell.T.Q) NTON = NTON + 1;                    //   IF CELLS[K].T.Q THEN NTON := NTON + 1; END_IF;
+      cell.C("CU"_ = PH % 4 < 2,                        //   CELLS[K].C(CU := (PH MOD 4) < 2,
+             "R"_ = (CYC + K) % 500 == 0, "PV"_ = 50);  //              R := ((CYC + K) MOD 500) = 0, PV := 50);
+      if (cell.C.Q) NCTU = NCTU + 1;                    //   IF CELLS[K].C.Q THEN NCTU := NCTU + 1; END_IF;
+      cell.E("CLK"_ = (CYC + 3 * K) % 6 < 3);           //   CELLS[K].E(CLK := ((CYC + 3 * K) MOD 6) < 3);
+      if (cell.E.Q) NEDGE = NEDGE + 1;                  //   IF CELLS[K].E.Q THEN NEDGE := NEDGE + 1; END_IF;
+      ACC = (ACC * 3 + K * 3 - PH) % 8191;              //   ACC := (ACC * 3 + K * 3 - PH) MOD 8191;
+    }                                                   // END_FOR
   }
 };
 

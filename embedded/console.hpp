@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <string_view>
 
+#include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/time.hpp>
-#include <iecoop/types/elementary.hpp>
 
 #if defined(__arm__)
 #include "semihosting.hpp"
@@ -75,8 +75,8 @@ inline void put(iecoop::REAL value) noexcept {
   if (x < 0.0F) put("-");
   put(thousandths / 1000U);
   const auto fraction = static_cast<unsigned>(thousandths % 1000U);
-  const char decimals[4] = {'.', static_cast<char>('0' + fraction / 100U), static_cast<char>('0' + fraction / 10U % 10U),
-                            static_cast<char>('0' + fraction % 10U)};
+  const char decimals[4] = {'.', static_cast<char>('0' + fraction / 100U),
+                            static_cast<char>('0' + fraction / 10U % 10U), static_cast<char>('0' + fraction % 10U)};
   put(std::string_view(decimals, sizeof decimals));
 }
 

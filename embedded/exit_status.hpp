@@ -12,10 +12,10 @@ namespace firmware {
 
 /// The statuses the examples and the start-up code end with.
 enum exit_status : int {
-  passed = 0,         ///< the example computed what it expected
-  failed = 1,         ///< the example computed something else
-  iecoop_fault = 2,   ///< iecoop reported a fault (fault_handler.hpp)
-  cpu_fault = 3,      ///< a processor exception or abort() (startup.cpp)
+  passed = 0,        ///< the example computed what it expected
+  failed = 1,        ///< the example computed something else
+  iecoop_fault = 2,  ///< iecoop reported a fault (fault_handler.hpp)
+  cpu_fault = 3,     ///< a processor exception or abort() (startup.cpp)
 };
 
 /// Ends the program with `status`.

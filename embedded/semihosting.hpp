@@ -30,7 +30,9 @@ inline std::uint32_t request(std::uint32_t operation, const void* arguments) noe
   return r0;
 }
 
-inline std::uint32_t address_of(const void* p) noexcept { return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(p)); }
+inline std::uint32_t address_of(const void* p) noexcept {
+  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(p));
+}
 
 // The host's stdout is the special file ":tt" opened for writing (mode 4, "w"). SYS_WRITE0
 // would be shorter, but QEMU sends it to stderr, where a test cannot tell it from QEMU's own

@@ -28,8 +28,8 @@ inline volatile std::uint32_t& syst_cvr() { return *reinterpret_cast<volatile st
 /// On hardware that is the core clock divided by 1000 for a 1 ms tick.
 inline void start(std::uint32_t core_clocks_per_tick) noexcept {
   detail::syst_rvr() = core_clocks_per_tick - 1U;  // counts from the reload value down to 0
-  detail::syst_cvr() = 0;                           // any write clears the counter
-  detail::syst_csr() = 0x7U;                        // ENABLE | TICKINT | CLKSOURCE (the core clock)
+  detail::syst_cvr() = 0;                          // any write clears the counter
+  detail::syst_csr() = 0x7U;                       // ENABLE | TICKINT | CLKSOURCE (the core clock)
 }
 
 /// What SysTick_Handler does: the firmware defines the handler (its name is in the vector

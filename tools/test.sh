@@ -1,10 +1,11 @@
 #!/bin/sh
 # Builds and runs iecoop's whole test suite, the way CI does:
+#   0. the layout of the code against .clang-format (sh tools/format.sh --check),
 #   1. g++ with AddressSanitizer and UndefinedBehaviorSanitizer (-O2),
 #   2. clang++ (-O3),
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
 # tests, the compile-fail checks, the header self-containment and -fno-exceptions -fno-rtti
-# checks, the examples, the consumer projects (find_package and add_subdirectory) and
+# checks, the examples, the consumer projects (find_package, add_subdirectory, FetchContent) and
 # iecoop-check's tests (the examples checked clean with it).
 #   3. the firmware examples for Cortex-M3 and Cortex-M4F (CMake presets cortex-m3 and
 #      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
@@ -24,6 +25,10 @@ iecoop_require_packages gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-
 for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm; do
   command -v "$tool" >/dev/null 2>&1 || { echo "iecoop: $tool is missing: the firmware tests cannot run" >&2; exit 1; }
 done
+
+# The layout of the code (.clang-format), checked first: it takes seconds.
+echo "== iecoop: layout (clang-format-16)"
+sh tools/format.sh --check
 
 jobs=$(nproc 2>/dev/null || echo 2)
 

@@ -29,7 +29,7 @@ bool run_with(BOOL use_mem_instance, const char* block, REAL expected_add, REAL 
 
 int main() {
   firmware::install_fault_handler();
-  bool ok = run_with(TRUE, "FB_MathMen", 5.0F, 15.0F);    // (2 + 3) * 3, kept
+  bool ok = run_with(TRUE, "FB_MathMen", 5.0F, 15.0F);     // (2 + 3) * 3, kept
   ok = run_with(FALSE, "FB_MethErase", 5.0F, 0.0F) && ok;  // 2 + 3, then erased: 0 * 3
   ok = run_with(TRUE, "FB_MathMen", 5.0F, 15.0F) && ok;    // P_Result := 2 starts it afresh
   firmware::print_line("RESULT i_math_interface ", ok ? "PASS" : "FAIL");

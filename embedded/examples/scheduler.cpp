@@ -48,17 +48,17 @@ struct I_Motor : interface_base<I_Motor> {
 // Starts in star, switches to delta after T#50ms.
 struct FB_StarDelta : function_block<FB_StarDelta, implements<I_Motor>> {
   // VAR
-  TON tStar;     // tStar : TON;
-  BOOL bStar;    // bStar : BOOL;
-  BOOL bDelta;   // bDelta : BOOL;
+  TON tStar;    // tStar : TON;
+  BOOL bStar;   // bStar : BOOL;
+  BOOL bDelta;  // bDelta : BOOL;
   // END_VAR
 
   void Run(args<Run_vars> in) override {
     tStar("IN"_ = in.bRun, "PT"_ = "T#50ms"_iec);  // tStar(IN := bRun, PT := T#50ms);
-    bStar = in.bRun && !tStar.Q;                    // bStar := bRun AND NOT tStar.Q;
-    bDelta = tStar.Q;                               // bDelta := tStar.Q;
+    bStar = in.bRun && !tStar.Q;                   // bStar := bRun AND NOT tStar.Q;
+    bDelta = tStar.Q;                              // bDelta := tStar.Q;
   }
-  BOOL bRunning_Get() override { return bDelta; }   // bRunning := bDelta;
+  BOOL bRunning_Get() override { return bDelta; }  // bRunning := bDelta;
 };
 
 // PROGRAM MOTOR_PRG
@@ -68,20 +68,20 @@ struct MOTOR_PRG : program<MOTOR_PRG> {
   [[no_unique_address]] located<BOOL, "%IX0.1", pump_image> ixStop;   // ixStop AT %IX0.1 : BOOL;
   [[no_unique_address]] located<BOOL, "%QX0.0", pump_image> qxStar;   // qxStar AT %QX0.0 : BOOL;
   [[no_unique_address]] located<BOOL, "%QX0.1", pump_image> qxDelta;  // qxDelta AT %QX0.1 : BOOL;
-  FB_StarDelta fbStarter;  // fbStarter : FB_StarDelta;
-  itf<I_Motor> ipMotor;    // ipMotor : I_Motor;
-  BOOL bRun;               // bRun : BOOL;
-  BOOL bRunning;           // bRunning : BOOL;
+  FB_StarDelta fbStarter;                                             // fbStarter : FB_StarDelta;
+  itf<I_Motor> ipMotor;                                               // ipMotor : I_Motor;
+  BOOL bRun;                                                          // bRun : BOOL;
+  BOOL bRunning;                                                      // bRunning : BOOL;
   // END_VAR
   using LOCATED = pins<&MOTOR_PRG::ixStart, &MOTOR_PRG::ixStop, &MOTOR_PRG::qxStar, &MOTOR_PRG::qxDelta>;
 
   void body() {
-    ipMotor = fbStarter;                   // ipMotor := fbStarter;
-    bRun = (ixStart || bRun) && !ixStop;   // bRun := (ixStart OR bRun) AND NOT ixStop;
-    ipMotor->Run(bRun);                    // ipMotor.Run(bRun);
-    bRunning = ipMotor->bRunning;          // bRunning := ipMotor.bRunning;
-    qxStar = fbStarter.bStar;              // qxStar := fbStarter.bStar;
-    qxDelta = fbStarter.bDelta;            // qxDelta := fbStarter.bDelta;
+    ipMotor = fbStarter;                  // ipMotor := fbStarter;
+    bRun = (ixStart || bRun) && !ixStop;  // bRun := (ixStart OR bRun) AND NOT ixStop;
+    ipMotor->Run(bRun);                   // ipMotor.Run(bRun);
+    bRunning = ipMotor->bRunning;         // bRunning := ipMotor.bRunning;
+    qxStar = fbStarter.bStar;             // qxStar := fbStarter.bStar;
+    qxDelta = fbStarter.bDelta;           // qxDelta := fbStarter.bDelta;
   }
 };
 
@@ -105,15 +105,15 @@ struct STATS_PRG : program<STATS_PRG> {
 struct LAMP_PRG : program<LAMP_PRG> {
   // VAR
   [[no_unique_address]] located<BOOL, "%QX0.2", pump_image> qxLamp;  // qxLamp AT %QX0.2 : BOOL;
-  TP tpBlink;      // tpBlink : TP;
-  BOOL bToggle;    // bToggle : BOOL;
+  TP tpBlink;                                                        // tpBlink : TP;
+  BOOL bToggle;                                                      // bToggle : BOOL;
   // END_VAR
   using LOCATED = pins<&LAMP_PRG::qxLamp>;
 
   void body() {
-    bToggle = !bToggle;                                         // bToggle := NOT bToggle;
-    tpBlink("IN"_ = bToggle, "PT"_ = "T#50ms"_iec);              // tpBlink(IN := bToggle, PT := T#50ms);
-    qxLamp = tpBlink.Q && !MOTOR_PRG::instance().bRunning;      // qxLamp := tpBlink.Q AND NOT MOTOR_PRG.bRunning;
+    bToggle = !bToggle;                                     // bToggle := NOT bToggle;
+    tpBlink("IN"_ = bToggle, "PT"_ = "T#50ms"_iec);         // tpBlink(IN := bToggle, PT := T#50ms);
+    qxLamp = tpBlink.Q && !MOTOR_PRG::instance().bRunning;  // qxLamp := tpBlink.Q AND NOT MOTOR_PRG.bRunning;
   }
 };
 
@@ -188,7 +188,8 @@ int main() {
   const TIME running = stats.tRunning;
   firmware::print_line("field: star last on at ", field.star_on_ms, " ms, delta last on at ", field.delta_on_ms,
                        " ms, lamp last on at ", field.lamp_on_ms, " ms");
-  firmware::print_line("pump: ", field.delta_starts, " starts seen by the field, CTU counted ", starts, ", ran ", running);
+  firmware::print_line("pump: ", field.delta_starts, " starts seen by the field, CTU counted ", starts, ", ran ",
+                       running);
   for (const task_state& t : plc.tasks()) print_task(t);
   // Each start: the latch at the button's first cycle (20 ms, 700 ms), star for T#50ms, then
   // delta until the cycle that reads STOP (520 ms, 900 ms). Slow samples the motor every 10 ms

@@ -22,12 +22,12 @@ struct PLC_PRG : program<PLC_PRG> {
   BOOL bClock;   // bClock : BOOL;
   // END_VAR
   // VAR
-  TON tOnDelay;    // tOnDelay : TON;
-  TOF tOffDelay;   // tOffDelay : TOF;
-  TP tPulse;       // tPulse : TP;
-  CTU ctUp;        // ctUp : CTU;
-  CTD ctDown;      // ctDown : CTD;
-  CTUD ctUpDown;   // ctUpDown : CTUD;
+  TON tOnDelay;   // tOnDelay : TON;
+  TOF tOffDelay;  // tOffDelay : TOF;
+  TP tPulse;      // tPulse : TP;
+  CTU ctUp;       // ctUp : CTU;
+  CTD ctDown;     // ctDown : CTD;
+  CTUD ctUpDown;  // ctUpDown : CTUD;
   // END_VAR
 
   void body() {
@@ -83,7 +83,7 @@ int main() {
   firmware::print_line("CTD  PV=5: Q rose at ", down.rose, " ms, fell at ", down.fell, " ms");
   firmware::print_line("CTUD PV=12: QU rose at ", up_down_q.rose, " ms, CV = ", up_down_cv, " at the end");
   // The switch is on from 100 ms to 800 ms; the clock rises at 20 ms, 60 ms, 100 ms, ...
-  const bool ok = on_delay.rose == 400 && on_delay.fell == 800       // 300 ms after the switch; with it
+  const bool ok = on_delay.rose == 400 && on_delay.fell == 800        // 300 ms after the switch; with it
                   && off_delay.rose == 100 && off_delay.fell == 1000  // with the switch; 200 ms after
                   && pulse.rose == 100 && pulse.fell == 350           // 250 ms from the switch's edge
                   && up.rose == 460 && up.fell == 800                 // 10th edge after 100 ms; RESET

@@ -3,12 +3,12 @@
 #pragma once
 
 #if defined(_MSVC_LANG)
-#  define IECOOP_CPLUSPLUS _MSVC_LANG
+#define IECOOP_CPLUSPLUS _MSVC_LANG
 #else
-#  define IECOOP_CPLUSPLUS __cplusplus
+#define IECOOP_CPLUSPLUS __cplusplus
 #endif
 #if IECOOP_CPLUSPLUS < 202002L
-#  error "iecoop: requires C++20; compile with -std=c++20 (or link the CMake target iecoop::iecoop, which requests it)"
+#error "iecoop: requires C++20; compile with -std=c++20 (or link the CMake target iecoop::iecoop, which requests it)"
 #endif
 
 #define IECOOP_VERSION_MAJOR 0

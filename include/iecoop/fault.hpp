@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <cstdlib>
 #if !defined(IECOOP_NO_STDIO)
-#  include <cstdio>
+#include <cstdio>
 #endif
 
 #include <iecoop/config.hpp>

@@ -84,7 +84,8 @@ struct fmt::formatter<iecoop::iec_string<char16_t, N>> : fmt::formatter<std::str
   }
 };
 
-// var<>, read_only<>, in_out<>, output<>, retain<>, located<> and property<> format as their values (a property calls Get).
+// var<>, read_only<>, in_out<>, output<>, retain<>, located<> and property<> format as their values (a property calls
+// Get).
 template <class W>
   requires iecoop::detail::value_wrapper<W>
 struct fmt::formatter<W, char> : fmt::formatter<iecoop::detail::unwrapped_t<W>, char> {

@@ -5,6 +5,7 @@ using namespace iecoop;
 struct FB_Abstract : function_block<FB_Abstract> {
   virtual ~FB_Abstract() = default;
   virtual void body() {}
+
  protected:
   FB_Abstract() = default;  // FUNCTION_BLOCK ABSTRACT FB_Abstract
 };

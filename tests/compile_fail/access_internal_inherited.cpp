@@ -17,4 +17,7 @@ struct FB_App : extends<FB_App, lib::FB_Axis> {
   void body() override {}
 #endif
 };
-int main() { FB_App app; app(); }
+int main() {
+  FB_App app;
+  app();
+}

@@ -4,6 +4,7 @@
 using namespace iecoop;
 struct FB : function_block<FB> {
   void body() { Secret(); }
+
  private:
   void Secret() {}
 };

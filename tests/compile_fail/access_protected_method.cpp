@@ -5,6 +5,7 @@ using namespace iecoop;
 struct FB_Base : function_block<FB_Base> {
   virtual ~FB_Base() = default;
   virtual void body() {}
+
  protected:
   void Helper() {}
 };

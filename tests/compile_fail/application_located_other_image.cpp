@@ -1,6 +1,6 @@
-// EXPECT: iecoop: a located variable of the application's programs or global variable lists lies in another process image
-// A program's located variable must lie in the image the application latches and writes;
-// one in another image would never reach the field.
+// EXPECT: iecoop: a located variable of the application's programs or global variable lists lies in another process
+// image A program's located variable must lie in the image the application latches and writes; one in another image
+// would never reach the field.
 #include <iecoop/runtime/application.hpp>
 #include <iecoop/types/literals.hpp>
 

@@ -9,4 +9,7 @@ struct FB : function_block<FB> {
   void body() { iValue = iValue + 1; }
 #endif
 };
-int main() { FB fb; fb(); }
+int main() {
+  FB fb;
+  fb();
+}

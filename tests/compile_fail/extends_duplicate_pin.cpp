@@ -18,4 +18,7 @@ struct fbB : extends<fbB, fbA> {
   using VAR_INPUT = pins<&fbB::ivar>;
 #endif
 };
-int main() { fbB b; b(); }
+int main() {
+  fbB b;
+  b();
+}

@@ -14,4 +14,7 @@ struct FB_Base : function_block<FB_Base> {
 struct FB_Derived : extends<FB_Derived, FB_Base> {
   void body() override {}
 };
-int main() { FB_Derived fb; fb(); }
+int main() {
+  FB_Derived fb;
+  fb();
+}

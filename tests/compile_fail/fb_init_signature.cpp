@@ -19,4 +19,7 @@ struct FB : function_block<FB> {
   }
 #endif
 };
-int main() { FB fb{INT(3)}; fb(); }
+int main() {
+  FB fb{INT(3)};
+  fb();
+}

@@ -21,4 +21,7 @@ struct FB_More : extends<FB_More, FB_Final> {
   void body() override {}
 };
 #endif
-int main() { FB_More fb; fb(); }
+int main() {
+  FB_More fb;
+  fb();
+}

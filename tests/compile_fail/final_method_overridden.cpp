@@ -15,4 +15,7 @@ struct FB_Derived : extends<FB_Derived, FB_Base> {
   void body() override {}
   INT Count() override { return 2; }
 };
-int main() { FB_Derived fb; return fb.Count() == 2 ? 0 : 1; }
+int main() {
+  FB_Derived fb;
+  return fb.Count() == 2 ? 0 : 1;
+}

@@ -2,7 +2,10 @@
 // A method's output is read after the call with =>, never passed in.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
-struct M_vars { INT a; output<INT> r; };
+struct M_vars {
+  INT a;
+  output<INT> r;
+};
 struct FB : function_block<FB> {
   void body() {}
   void M(args<M_vars> in) { in.r = in.a * 2; }

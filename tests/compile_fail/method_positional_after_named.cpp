@@ -2,7 +2,10 @@
 // Positional arguments first; after a named one, all must be named.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
-struct M_vars { INT a; INT b; };
+struct M_vars {
+  INT a;
+  INT b;
+};
 struct FB : function_block<FB> {
   void body() {}
   INT M(args<M_vars> in) { return in.a + in.b; }

@@ -3,7 +3,10 @@
 // A positional call cannot pass more arguments than the method declares.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
-struct M_vars { INT a; INT b; };
+struct M_vars {
+  INT a;
+  INT b;
+};
 struct FB : function_block<FB> {
   void body() {}
   INT M(args<M_vars> in) { return in.a + in.b; }

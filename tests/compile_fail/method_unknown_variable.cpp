@@ -4,7 +4,10 @@
 // A named argument of a method must name one of its variables.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
-struct M_vars { INT a; INT b; };
+struct M_vars {
+  INT a;
+  INT b;
+};
 struct FB : function_block<FB> {
   void body() {}
   INT M(args<M_vars> in) { return in.a + in.b; }

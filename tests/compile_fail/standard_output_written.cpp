@@ -9,7 +9,7 @@ int main() {
 #ifdef IECOOP_COMPILE_FAIL
   tmr.Q = TRUE;  // tmr.Q := TRUE;  (not allowed in ST either)
 #else
-  BOOL q = tmr.Q;  // q := tmr.Q;
+  BOOL q = tmr.Q;     // q := tmr.Q;
   tmr.PT = TIME(20);  // inputs may be assigned
   if (q) return 1;
 #endif

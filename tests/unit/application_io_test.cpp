@@ -80,8 +80,8 @@ TEST_SUITE("application: process image") {
     field.set<"%IW1">(INT(100));
     plc.start();
     plc.run_for(ms(3));
-    CHECK(image::read<BOOL, "%QX0.0">() == TRUE);   // written by the program
-    CHECK(field.output<"%QX0.0">() == FALSE);       // not yet sent
+    CHECK(image::read<BOOL, "%QX0.0">() == TRUE);  // written by the program
+    CHECK(field.output<"%QX0.0">() == FALSE);      // not yet sent
     CHECK(field.write_count() == 0);
     plc.run_for(ms(1));
     CHECK(field.output<"%QX0.0">() == TRUE);

@@ -76,7 +76,7 @@ TEST_SUITE("application: review regressions") {
   TEST_CASE("a release grid near LTIME::max() neither wraps nor loops") {
     application plc{task<COUNT_PRG>{"T", cyclic{LTIME::from_ticks(1ULL << 63)}, 0}};
     plc.start();
-    plc.run_until(LTIME::max());  // returned only because the next release saturates to "never"
+    plc.run_until(LTIME::max());                // returned only because the next release saturates to "never"
     CHECK(COUNT_PRG::instance().nCalls == 2U);  // at 0 and at 2^63 ns
     CHECK(plc.task(0).statistics().overruns == 0);
   }

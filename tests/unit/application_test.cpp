@@ -231,7 +231,8 @@ TEST_SUITE("application: watchdog") {
     // Watchdog 2 ms, sensitivity 2; cycles take 1, 3, 1, 3, 3 ms: the third overrun is the
     // second in a row, in the cycle that starts at 40 ms and ends at 43 ms.
     application plc{task<FAST_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0, watchdog{"T#2ms"_iec, 2}}};
-    plc.task(0).model_execution_time([](std::uint64_t n, void*) { return LTIME::from_ticks((n == 0 || n == 2 ? 1U : 3U) * 1000000U); });
+    plc.task(0).model_execution_time(
+        [](std::uint64_t n, void*) { return LTIME::from_ticks((n == 0 || n == 2 ? 1U : 3U) * 1000000U); });
     fault_recorder faults;
     plc.start();
     plc.run_for("T#43ms"_iec);
@@ -270,7 +271,8 @@ TEST_SUITE("application: watchdog") {
 
   TEST_CASE("an overrun followed by a good cycle does not count as in a row") {
     application plc{task<FAST_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0, watchdog{"T#2ms"_iec, 2}}};
-    plc.task(0).model_execution_time([](std::uint64_t n, void*) { return LTIME::from_ticks((n % 2 == 0 ? 3U : 1U) * 1000000U); });
+    plc.task(0).model_execution_time(
+        [](std::uint64_t n, void*) { return LTIME::from_ticks((n % 2 == 0 ? 3U : 1U) * 1000000U); });
     fault_recorder faults;
     plc.start();
     plc.run_for("T#100ms"_iec);
@@ -310,7 +312,7 @@ TEST_SUITE("application: event and freewheeling tasks") {
     plc.run_for("T#5ms"_iec);
     CHECK(ALARM_PRG::instance().nRuns == 1U);
     CHECK(ALARM_PRG::instance().last_seen == ms(5));  // at the start of the run that saw the edge
-    plc.run_for("T#5ms"_iec);  // still TRUE: no new edge
+    plc.run_for("T#5ms"_iec);                         // still TRUE: no new edge
     CHECK(ALARM_PRG::instance().nRuns == 1U);
     bAlarm = FALSE;
     plc.run_for("T#1ms"_iec);
@@ -408,7 +410,8 @@ TEST_SUITE("application: event and freewheeling tasks") {
 
 TEST_SUITE("application: tasks by name, faults") {
   TEST_CASE("tasks are found by name and index") {
-    application plc{task<FAST_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0}, task<SLOW_PRG, LOW_PRG>{"Slow", cyclic{"T#10ms"_iec}, 7}};
+    application plc{task<FAST_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0},
+                    task<SLOW_PRG, LOW_PRG>{"Slow", cyclic{"T#10ms"_iec}, 7}};
     CHECK(plc.task_count() == 2);
     CHECK(std::string(plc.task(1).name()) == "Slow");
     CHECK(plc.task("Slow").priority() == 7);
@@ -527,7 +530,9 @@ struct fast_slow_plc : fast_slow {
                   iecoop::task<SLOW_PRG>{"Slow", cyclic{"T#5ms"_iec}, 1}} {}
 };
 template <class Plc>
-void run_ten_ms(Plc& plc) { plc.run_for(ms(10)); }
+void run_ten_ms(Plc& plc) {
+  plc.run_for(ms(10));
+}
 void run_ten_ms_named(fast_slow& plc) { run_ten_ms(plc); }
 }  // namespace
 

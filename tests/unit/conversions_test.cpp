@@ -19,11 +19,16 @@ using elementary_types = std::tuple<BOOL, BYTE, WORD, DWORD, LWORD, SINT, INT, D
 // The text a zero of each type converts to.
 template <class T>
 constexpr std::string_view zero_text() {
-  if constexpr (std::is_same_v<T, BOOL>) return "FALSE";
-  else if constexpr (std::is_same_v<T, TIME>) return "T#0ms";
-  else if constexpr (std::is_same_v<T, LTIME>) return "LTIME#0ns";
-  else if constexpr (AnyString<T>) return "";
-  else return "0";
+  if constexpr (std::is_same_v<T, BOOL>)
+    return "FALSE";
+  else if constexpr (std::is_same_v<T, TIME>)
+    return "T#0ms";
+  else if constexpr (std::is_same_v<T, LTIME>)
+    return "LTIME#0ns";
+  else if constexpr (AnyString<T>)
+    return "";
+  else
+    return "0";
 }
 
 template <class To, class From>
@@ -96,8 +101,8 @@ TEST_SUITE("conversions") {
   }
 
   TEST_CASE("REAL to integer rounds to nearest, halves away from zero") {
-    CHECK(REAL_TO_INT(1.5f) == 2);  // CODESYS: REAL_TO_INT(1.5) = 2
-    CHECK(REAL_TO_INT(1.4f) == 1);  // CODESYS: REAL_TO_INT(1.4) = 1
+    CHECK(REAL_TO_INT(1.5f) == 2);    // CODESYS: REAL_TO_INT(1.5) = 2
+    CHECK(REAL_TO_INT(1.4f) == 1);    // CODESYS: REAL_TO_INT(1.4) = 1
     CHECK(REAL_TO_INT(-1.5f) == -2);  // CODESYS: REAL_TO_INT(-1.5) = -2
     CHECK(REAL_TO_INT(2.5f) == 3);
     CHECK(REAL_TO_INT(-0.4f) == 0);

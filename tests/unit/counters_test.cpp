@@ -127,13 +127,17 @@ void pulse_input(B& counter, BOOL B::*input, long count) {
 static_assert(std::is_same_v<decltype(CTU::PV), WORD> && std::is_same_v<decltype(codesys::CTUD::PV), WORD>);
 static_assert(std::is_same_v<decltype(iec::CTU::PV), INT> && std::is_same_v<decltype(matiec::CTD::PV), INT>);
 static_assert(std::is_same_v<decltype(CTU_DINT::PV), DINT> && std::is_same_v<decltype(iec::CTD_LINT::PV), LINT>);
-static_assert(std::is_same_v<decltype(matiec::CTUD_UDINT::PV), UDINT> && std::is_same_v<decltype(CTUD_ULINT::PV), ULINT>);
+static_assert(std::is_same_v<decltype(matiec::CTUD_UDINT::PV), UDINT> &&
+              std::is_same_v<decltype(CTUD_ULINT::PV), ULINT>);
 template <class B>
 concept has_R = requires(B b) { b.R; };
 template <class B>
 concept has_LOAD = requires(B b) { b.LOAD; };
 static_assert(requires(CTU c) { c.RESET; } && !has_R<CTU>);
-static_assert(requires(iec::CTUD c) { c.R; c.LD; } && !has_LOAD<iec::CTUD>);
+static_assert(requires(iec::CTUD c) {
+  c.R;
+  c.LD;
+} && !has_LOAD<iec::CTUD>);
 static_assert(inputs_of<CTUD>::names == std::array<std::string_view, 5>{"CU", "CD", "RESET", "LOAD", "PV"});
 static_assert(inputs_of<iec::CTD>::names == std::array<std::string_view, 3>{"CD", "LD", "PV"});
 static_assert(outputs_of<CTUD>::names == std::array<std::string_view, 3>{"QU", "QD", "CV"});
@@ -148,9 +152,9 @@ TEST_SUITE("standard blocks: CTU") {
         {true, false, 2, false, 1},
         {true, false, 2, false, 1},  // still TRUE: no edge
         {false, false, 2, false, 1},
-        {true, false, 2, true, 2},   // CV = PV
+        {true, false, 2, true, 2},  // CV = PV
         {false, false, 2, true, 2},
-        {true, false, 2, true, 3},   // CODESYS counts on past PV (up to the type's limit)
+        {true, false, 2, true, 3},  // CODESYS counts on past PV (up to the type's limit)
         {false, true, 2, false, 0},
     });
   }
@@ -159,8 +163,8 @@ TEST_SUITE("standard blocks: CTU") {
     check_up<iec::CTU>({
         {true, false, 5, false, 1},
         {false, true, 5, false, 0},
-        {true, true, 5, false, 0},    // edge during reset: not counted...
-        {true, false, 5, false, 0},   // ...and not counted when the reset ends either
+        {true, true, 5, false, 0},   // edge during reset: not counted...
+        {true, false, 5, false, 0},  // ...and not counted when the reset ends either
         {false, false, 5, false, 0},
         {true, false, 5, false, 1},
     });
@@ -204,7 +208,7 @@ TEST_SUITE("standard blocks: CTD") {
   TEST_CASE("the seed's way: LOAD 0-1-0, then count down to 0") {
     check_down<CTD>({
         //  CD    LD    PV  Q     CV
-        {false, false, 3, true, 0},   // CV starts at 0: Q is TRUE before anything is loaded
+        {false, false, 3, true, 0},  // CV starts at 0: Q is TRUE before anything is loaded
         {false, true, 3, false, 3},
         {false, false, 3, false, 3},
         {true, false, 3, false, 2},
@@ -213,7 +217,7 @@ TEST_SUITE("standard blocks: CTD") {
         {false, false, 3, false, 1},
         {true, false, 3, true, 0},
         {false, false, 3, true, 0},
-        {true, false, 3, true, 0},    // WORD: stops at 0
+        {true, false, 3, true, 0},  // WORD: stops at 0
     });
   }
 
@@ -249,14 +253,14 @@ TEST_SUITE("standard blocks: CTUD") {
         //  CU    CD     R      LD    PV  QU     QD    CV
         {false, false, false, false, 3, false, true, 0},
         {true, false, false, false, 3, false, false, 1},
-        {false, true, false, false, 3, false, true, 0},    // CD rises: down
+        {false, true, false, false, 3, false, true, 0},  // CD rises: down
         {false, false, false, false, 3, false, true, 0},
-        {true, true, false, false, 3, false, true, 0},     // both rise at once: nothing
-        {false, false, false, true, 3, true, false, 3},    // LD: CV := PV
-        {false, false, true, true, 3, false, true, 0},     // R and LD: R wins
-        {true, false, false, true, 3, true, false, 3},     // LD and an edge of CU: LD wins
+        {true, true, false, false, 3, false, true, 0},   // both rise at once: nothing
+        {false, false, false, true, 3, true, false, 3},  // LD: CV := PV
+        {false, false, true, true, 3, false, true, 0},   // R and LD: R wins
+        {true, false, false, true, 3, true, false, 3},   // LD and an edge of CU: LD wins
         {false, false, false, false, 3, true, false, 3},
-        {true, false, false, false, 3, true, false, 4},    // codesys: up past PV
+        {true, false, false, false, 3, true, false, 4},  // codesys: up past PV
     });
   }
 

@@ -87,9 +87,9 @@ TEST_SUITE("standard blocks: SR and RS") {
         //  S1    R     Q1
         {false, false, false},
         {true, false, true},
-        {false, false, true},   // holds
+        {false, false, true},  // holds
         {false, true, false},
-        {true, true, true},     // both: set wins
+        {true, true, true},  // both: set wins
         {false, false, true},
     });
   }
@@ -99,7 +99,7 @@ TEST_SUITE("standard blocks: SR and RS") {
         //  S     R1    Q1
         {true, false, true},
         {false, false, true},
-        {true, true, false},    // both: reset wins
+        {true, true, false},  // both: reset wins
         {true, false, true},
         {false, true, false},
         {false, false, false},

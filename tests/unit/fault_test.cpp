@@ -18,9 +18,7 @@ void remember(const fault_info& fault) {
 }  // namespace
 
 TEST_SUITE("fault path") {
-  TEST_CASE("the default handler is installed at start-up") {
-    CHECK((get_fault_handler() == &default_fault_handler));
-  }
+  TEST_CASE("the default handler is installed at start-up") { CHECK((get_fault_handler() == &default_fault_handler)); }
 
   TEST_CASE("an installed handler receives every fault, and the previous one comes back") {
     calls = 0;

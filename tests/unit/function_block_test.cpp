@@ -74,7 +74,7 @@ struct FB_Machine : function_block<FB_Machine> {
 struct FB_SafeMachine : extends<FB_SafeMachine, FB_Machine> {
   BOOL bSafe;
   void body() override { SUPER::body(); }  // SUPER^();
-  void Stop() override {  // the action, overridden
+  void Stop() override {                   // the action, overridden
     SUPER::Stop();
     bSafe = TRUE;
   }

@@ -1,8 +1,8 @@
 // iecoop injects nothing into the global namespace: after including every header, the
 // global namespace may declare all of iecoop's names for itself and use them unambiguously
 // (a using-declaration would clash, a using-directive would make each use ambiguous).
-#include <iecoop/iecoop.hpp>
 #include <iecoop/fmt.hpp>
+#include <iecoop/iecoop.hpp>
 #include <iecoop/ostream.hpp>
 
 #include <cstddef>
@@ -14,9 +14,9 @@ int BOOL = 1, BYTE = 2, WORD = 3, DWORD = 4, LWORD = 5, SINT = 6, INT = 7, DINT 
     basic_time = 38, iec_string = 39, conversion = 40, to_text = 41, parse_result = 42, AnyInt = 43, literals = 44,
     function_block = 45, extends = 46, program = 47, args = 48, pins = 49, local = 50, in_out = 51, output = 52,
     function = 53, run_fb_init = 54, reset = 55, online_change = 56, member_of = 57, internal_access = 58,
-    block_access = 59, field_name = 60, param_name = 61, first_output_t = 62, inputs_of = 63, SUPER = 64,
-    property = 65, interface_base = 66, implements = 67, itf = 68, query_interface = 69, query_pointer = 70,
-    Implements = 71, Property = 72, monitoring = 73, owner_only_get = 74, owner_only_set = 75;
+    block_access = 59, field_name = 60, param_name = 61, first_output_t = 62, inputs_of = 63, SUPER = 64, property = 65,
+    interface_base = 66, implements = 67, itf = 68, query_interface = 69, query_pointer = 70, Implements = 71,
+    Property = 72, monitoring = 73, owner_only_get = 74, owner_only_set = 75;
 int operator""_iec(const char*, std::size_t) { return 76; }
 int operator""_(const char*, std::size_t) { return 77; }
 
@@ -33,6 +33,4 @@ int sum_of_globals() {
 
 #include "iecoop_test.hpp"
 
-TEST_CASE("the global namespace keeps every IEC name for itself") {
-  CHECK(sum_of_globals() == 77 * 78 / 2);
-}
+TEST_CASE("the global namespace keeps every IEC name for itself") { CHECK(sum_of_globals() == 77 * 78 / 2); }

@@ -90,8 +90,8 @@ TEST_SUITE("INTERFACE") {
       } else {
         ip = down;
       }
-      ip->Count();                 // ip.Count();
-      ip->Count({"dStep"_ = 5});   // ip.Count(dStep := 5);
+      ip->Count();                // ip.Count();
+      ip->Count({"dStep"_ = 5});  // ip.Count(dStep := 5);
     }
     CHECK(up.dValue == 6);
     CHECK(down.dValue == 94);

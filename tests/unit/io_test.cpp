@@ -190,17 +190,17 @@ TEST_SUITE("I/O drivers") {
       int reads = 0;
     };
     board hw;
-    callback_io io{
-        [](std::span<std::byte> inputs, void* context) {
-          auto& b = *static_cast<board*>(context);
-          for (std::size_t i = 0; i < b.pins_in.size() && i < inputs.size(); ++i) inputs[i] = b.pins_in[i];
-          ++b.reads;
-        },
-        [](std::span<const std::byte> outputs, void* context) {
-          auto& b = *static_cast<board*>(context);
-          for (std::size_t i = 0; i < b.pins_out.size() && i < outputs.size(); ++i) b.pins_out[i] = outputs[i];
-        },
-        &hw};
+    callback_io io{[](std::span<std::byte> inputs, void* context) {
+                     auto& b = *static_cast<board*>(context);
+                     for (std::size_t i = 0; i < b.pins_in.size() && i < inputs.size(); ++i) inputs[i] = b.pins_in[i];
+                     ++b.reads;
+                   },
+                   [](std::span<const std::byte> outputs, void* context) {
+                     auto& b = *static_cast<board*>(context);
+                     for (std::size_t i = 0; i < b.pins_out.size() && i < outputs.size(); ++i)
+                       b.pins_out[i] = outputs[i];
+                   },
+                   &hw};
     CHECK(io.context() == &hw);
 
     sim_image::clear();

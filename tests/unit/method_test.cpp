@@ -11,9 +11,9 @@ using iecoop_test::fault_recorder;
 namespace {
 
 struct Scale_vars {
-  INT iIn;                    // VAR_INPUT iIn : INT;
-  REAL rFactor = 2.0f;        //           rFactor : REAL := 2.0;
-  output<INT> iOut;           // VAR_OUTPUT iOut : INT;
+  INT iIn;                      // VAR_INPUT iIn : INT;
+  REAL rFactor = 2.0f;          //           rFactor : REAL := 2.0;
+  output<INT> iOut;             // VAR_OUTPUT iOut : INT;
   output<BOOL> bClamped{TRUE};  //         bClamped : BOOL := TRUE;
 };
 

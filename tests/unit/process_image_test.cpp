@@ -46,18 +46,19 @@ static_assert(address_of<"%MD48">.first_byte(addressing::byte_offset) == 48);
 static_assert(address_of<"%IL5">.first_byte(addressing::byte_offset) == 5);
 
 static_assert(address_of<"%IX0.5">.byte_count() == 1 && address_of<"%IB0">.byte_count() == 1);
-static_assert(address_of<"%IW0">.byte_count() == 2 && address_of<"%ID0">.byte_count() == 4 && address_of<"%IL0">.byte_count() == 8);
+static_assert(address_of<"%IW0">.byte_count() == 2 && address_of<"%ID0">.byte_count() == 4 &&
+              address_of<"%IL0">.byte_count() == 8);
 static_assert(address_of<"%IX3.5">.first_bit(addressing::codesys) == 29 && address_of<"%IX3.5">.bit_count() == 1);
 static_assert(address_of<"%IW1">.first_bit(addressing::codesys) == 16 && address_of<"%IW1">.bit_count() == 16);
 
 // Overlap of two addresses: same area and at least one shared bit.
 static_assert(!address_of<"%IX0.0">.overlaps(address_of<"%IX0.1">, addressing::codesys));  // two bits of one byte
 static_assert(address_of<"%IX0.5">.overlaps(address_of<"%IB0">, addressing::codesys));
-static_assert(!address_of<"%IX0.5">.overlaps(address_of<"%QB0">, addressing::codesys));    // another area
-static_assert(address_of<"%IW2">.overlaps(address_of<"%IB5">, addressing::codesys));       // bytes 4..5
+static_assert(!address_of<"%IX0.5">.overlaps(address_of<"%QB0">, addressing::codesys));  // another area
+static_assert(address_of<"%IW2">.overlaps(address_of<"%IB5">, addressing::codesys));     // bytes 4..5
 static_assert(!address_of<"%IW2">.overlaps(address_of<"%IB3">, addressing::codesys));
-static_assert(address_of<"%IW2">.overlaps(address_of<"%IB3">, addressing::byte_offset));   // bytes 2..3
-static_assert(address_of<"%MD1">.overlaps(address_of<"%MW3">, addressing::codesys));       // bytes 4..7 and 6..7
+static_assert(address_of<"%IW2">.overlaps(address_of<"%IB3">, addressing::byte_offset));  // bytes 2..3
+static_assert(address_of<"%MD1">.overlaps(address_of<"%MW3">, addressing::codesys));      // bytes 4..7 and 6..7
 static_assert(!address_of<"%MD1">.overlaps(address_of<"%MW4">, addressing::codesys));
 static_assert(address_of<"%ML0">.overlaps(address_of<"%MD1">, addressing::codesys));
 static_assert(address_of<"%IX4.0">.overlaps(address_of<"%IW2">, addressing::codesys));
@@ -149,7 +150,8 @@ struct GVL_IO {
 static_assert(std::is_empty_v<located<BOOL, "%IX0.5">> && std::is_empty_v<located<LREAL, "%ML1">>);
 static_assert(sizeof(GVL_IO) == 1);
 static_assert(located<INT, "%IW1", io_image>::address == address_of<"%IW1">);
-static_assert(std::is_same_v<located<INT, "%IW1">::value_type, INT> && std::is_same_v<located<INT, "%IW1">::image_type, default_process_image>);
+static_assert(std::is_same_v<located<INT, "%IW1">::value_type, INT> &&
+              std::is_same_v<located<INT, "%IW1">::image_type, default_process_image>);
 static_assert(located_disjoint<GVL_IO>);
 
 // Eight BOOLs in one byte do not overlap; neither do variables in different images.
@@ -162,7 +164,7 @@ struct GVL_Bits {
   [[no_unique_address]] located<BOOL, "%IX0.5"> x5;
   [[no_unique_address]] located<BOOL, "%IX0.6"> x6;
   [[no_unique_address]] located<BOOL, "%IX0.7"> x7;
-  [[no_unique_address]] located<BYTE, "%QB0"> byOut;   // same byte number, another area
+  [[no_unique_address]] located<BYTE, "%QB0"> byOut;                 // same byte number, another area
   [[no_unique_address]] located<BYTE, "%IB0", alias_image> byOther;  // same address, another image
   using LOCATED = pins<&GVL_Bits::x0, &GVL_Bits::x1, &GVL_Bits::x2, &GVL_Bits::x3, &GVL_Bits::x4, &GVL_Bits::x5,
                        &GVL_Bits::x6, &GVL_Bits::x7, &GVL_Bits::byOut, &GVL_Bits::byOther>;
@@ -192,7 +194,7 @@ struct PRG_ByteBefore {
   [[no_unique_address]] located<BYTE, "%IB3"> byStatus;
   using LOCATED = pins<&PRG_ByteBefore::byStatus>;
 };
-static_assert(!located_disjoint<PRG_Word, PRG_Byte>);      // across two programs
+static_assert(!located_disjoint<PRG_Word, PRG_Byte>);  // across two programs
 static_assert(located_disjoint<PRG_Word, PRG_ByteBefore>);
 struct Dup_A {
   [[no_unique_address]] located<BOOL, "%QX1.1"> bLamp;
@@ -364,11 +366,11 @@ TEST_SUITE("located variables") {
   TEST_CASE("at<\"%...\"> is a directly represented variable: %IX5 in an expression, %QX1.0 := TRUE") {
     io_image::clear();
     io_image::write<BYTE, "%IB0">(BYTE(0x20));
-    CHECK(static_cast<bool>(at<"%IX5", io_image>));        // IEC's flat bit 5: bit 5 of byte 0
+    CHECK(static_cast<bool>(at<"%IX5", io_image>));  // IEC's flat bit 5: bit 5 of byte 0
     CHECK_FALSE(static_cast<bool>(at<"%IX4", io_image>));
-    at<"%QX1.0", io_image> = TRUE;                         // %QX1.0 := TRUE;
+    at<"%QX1.0", io_image> = TRUE;  // %QX1.0 := TRUE;
     CHECK(io_image::read<BYTE, "%QB1">() == 1);
-    at<"%MW2", io_image> = WORD(0x1234);                   // %MW2 := 16#1234; (a WORD: the size's type)
+    at<"%MW2", io_image> = WORD(0x1234);  // %MW2 := 16#1234; (a WORD: the size's type)
     CHECK(io_image::read<BYTE, "%MB4">() == 0x34);
     const WORD w = at<"%MW2", io_image>;
     CHECK(w == 0x1234);
@@ -433,7 +435,7 @@ TEST_SUITE("located variables") {
 
     io.bMotor = io.bStart & !io.bStop;  // bMotor := bStart AND NOT bStop;
     CHECK(io.bMotor == TRUE);
-    io.iSetpoint = io.iSpeed + 1;        // iSetpoint := iSpeed + 1;
+    io.iSetpoint = io.iSpeed + 1;  // iSetpoint := iSpeed + 1;
     CHECK(io.iSetpoint == 121);
     io.iSetpoint = io.iSpeed * io.iSetpoint - INT(20000);
     CHECK(io.iSetpoint == static_cast<INT>(120 * 121 - 20000));
@@ -525,7 +527,7 @@ TEST_SUITE("located variables") {
         ++iCycles;
       }
     };
-    check_located<PLC_PRG, GVL_IO>();  // disjoint: compiles
+    check_located<PLC_PRG, GVL_IO>();                     // disjoint: compiles
     static_assert(!located_disjoint<PLC_PRG, GVL_Bits>);  // %IX0.0 twice (and %QX0.0 in %QB0)
     static_assert(PLC_PRG::LOCATED::names[2] == "iCycles");
     PLC_PRG prg;

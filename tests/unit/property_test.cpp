@@ -282,7 +282,7 @@ TEST_SUITE("PROPERTY") {
       BOOL bHigh;
       REAL rScaled;
       void body() {
-        const REAL gain = Gain;        // reads as its value inside the block
+        const REAL gain = Gain;  // reads as its value inside the block
         bHigh = gain > REAL(2.0f);
         rScaled = Gain.get() * REAL(4.0f);  // in an operator's operand: get()
       }
@@ -337,7 +337,7 @@ struct FB_Sensor : function_block<FB_Sensor> {
 struct FB_Thermo : extends<FB_Thermo, FB_Sensor> {
   void body() override {}  // an empty implementation
   LREAL rRaw = 21.5;
-  LREAL Value_Get() final { return rRaw * Scale; }  // implements Value, FINAL
+  LREAL Value_Get() final { return rRaw * Scale; }                                     // implements Value, FINAL
   void Scale_Set(LREAL value) override { rScale = value < 0.0 ? LREAL(0.0) : value; }  // overrides Set only
   // A property of the derived block itself (its owner starts with the base's data).
   LREAL Raw_Get() const { return rRaw; }

@@ -84,7 +84,8 @@ TEST_SUITE("realtime runner") {
 
   TEST_CASE("event tasks are polled in real time") {
     bRealtimeEvent = FALSE;
-    application plc{task<TICK_PRG>{"Tick", cyclic{"T#50ms"_iec}, 1}, task<EVENT_PRG>{"Event", event{bRealtimeEvent}, 0}};
+    application plc{task<TICK_PRG>{"Tick", cyclic{"T#50ms"_iec}, 1},
+                    task<EVENT_PRG>{"Event", event{bRealtimeEvent}, 0}};
     plc.start();
     std::atomic<bool> stop{false};
     realtime_runner runner{plc};

@@ -33,15 +33,15 @@ struct FB_Counter : function_block<FB_Counter> {
 
 // PROGRAM PRG_Machine, with normal, RETAIN and PERSISTENT variables and a block inside.
 struct PRG_Machine : program<PRG_Machine> {
-  INT iCycles = 3;                  // VAR iCycles : INT := 3;
-  retain<INT> iCount{5};            // VAR RETAIN iCount : INT := 5;
-  retain<REAL> rLast{1.5};          //   rLast : REAL := 1.5;
-  retain<BOOL> bHomed;              //   bHomed : BOOL;
-  persistent<TIME> tRuntime;        // VAR PERSISTENT tRuntime : TIME;
+  INT iCycles = 3;                       // VAR iCycles : INT := 3;
+  retain<INT> iCount{5};                 // VAR RETAIN iCount : INT := 5;
+  retain<REAL> rLast{1.5};               //   rLast : REAL := 1.5;
+  retain<BOOL> bHomed;                   //   bHomed : BOOL;
+  persistent<TIME> tRuntime;             // VAR PERSISTENT tRuntime : TIME;
   persistent<STRING<10>> sName{"init"};  //   sName : STRING(10) := 'init';
-  persistent<DINT> diSerial{7};     //   diSerial : DINT := 7;
-  FB_Counter counter;               // VAR counter : FB_Counter; (its diTotal is RETAIN)
-  persistent<ST_Recipe> stRecipe;   // VAR PERSISTENT stRecipe : ST_Recipe;
+  persistent<DINT> diSerial{7};          //   diSerial : DINT := 7;
+  FB_Counter counter;                    // VAR counter : FB_Counter; (its diTotal is RETAIN)
+  persistent<ST_Recipe> stRecipe;        // VAR PERSISTENT stRecipe : ST_Recipe;
   void body() {
     iCycles = iCycles + 1;
     iCount = iCount + 1;
@@ -599,15 +599,15 @@ TEST_SUITE("retain") {
       damaged[at] = value;
       return detail::restore_retained(objects, retain_kinds::both, std::span(damaged).first(length));
     };
-    CHECK(restore_damaged(0, std::byte{'X'}, size) == retain_kinds::none);              // magic
-    CHECK(restore_damaged(4, std::byte{2}, size) == retain_kinds::none);                // version 2
-    CHECK(restore_damaged(8, std::byte{0xFF}, size) == retain_kinds::none);             // total size beyond the data
-    CHECK(restore_damaged(8, std::byte{8}, size) == retain_kinds::none);                // total size below the header
-    CHECK(restore_damaged(6, std::byte{3}, size) == retain_kinds::none);                // section count
+    CHECK(restore_damaged(0, std::byte{'X'}, size) == retain_kinds::none);   // magic
+    CHECK(restore_damaged(4, std::byte{2}, size) == retain_kinds::none);     // version 2
+    CHECK(restore_damaged(8, std::byte{0xFF}, size) == retain_kinds::none);  // total size beyond the data
+    CHECK(restore_damaged(8, std::byte{8}, size) == retain_kinds::none);     // total size below the header
+    CHECK(restore_damaged(6, std::byte{3}, size) == retain_kinds::none);     // section count
     CHECK(restore_damaged(size - 1, good[size - 1] ^ std::byte{1}, size) == retain_kinds::none);  // a value (checksum)
-    CHECK(restore_damaged(16, std::byte{7}, size) == retain_kinds::none);               // section kind
-    CHECK(restore_damaged(0, good[0], size - 1) == retain_kinds::none);                 // truncated
-    CHECK(restore_damaged(0, good[0], 10) == retain_kinds::none);                       // shorter than a header
+    CHECK(restore_damaged(16, std::byte{7}, size) == retain_kinds::none);                         // section kind
+    CHECK(restore_damaged(0, good[0], size - 1) == retain_kinds::none);                           // truncated
+    CHECK(restore_damaged(0, good[0], 10) == retain_kinds::none);  // shorter than a header
     CHECK(detail::restore_retained(objects, retain_kinds::both, {}) == retain_kinds::none);
     check_retain_initial(machine);
     check_persistent_initial(machine);
@@ -615,8 +615,7 @@ TEST_SUITE("retain") {
     // A section header that lies about its data, with a checksum to match: still refused.
     std::array<std::byte, 512> lying = good;
     lying[16 + 12] = std::byte{0xFF};
-    detail::retained_put(lying.data() + 12,
-                   detail::retained_checksum(std::span(lying).subspan(16, size - 16)), 4);
+    detail::retained_put(lying.data() + 12, detail::retained_checksum(std::span(lying).subspan(16, size - 16)), 4);
     CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(lying).first(size)) == retain_kinds::none);
 
     // Trailing bytes after a complete image are ignored.

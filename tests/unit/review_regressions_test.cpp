@@ -30,10 +30,10 @@ struct Callee : function_block<Callee> {
 
 struct User : function_block<User> {
   Callee c;
-  var<INT> loc;              // => into the block's own VAR
-  var<ST_Pos> pos;           // a structured VAR
-  DINT wide;                 // => with IEC widening
-  in_out<INT> io;            // => into an in-out
+  var<INT> loc;     // => into the block's own VAR
+  var<ST_Pos> pos;  // a structured VAR
+  DINT wide;        // => with IEC widening
+  in_out<INT> io;   // => into an in-out
   using VAR_IN_OUT = pins<&User::io>;
   void body() {
     c("q"_ >> loc);
@@ -52,7 +52,7 @@ struct Base : function_block<Base> {
   virtual void M(args<M_vars> in) { in.r = in.a * 2; }
 };
 struct Forwarding : extends<Forwarding, Base> {
-  void body() override {}  // an empty implementation
+  void body() override {}                             // an empty implementation
   void M(args<M_vars> in) override { SUPER::M(in); }  // SUPER^.M(a := a, r => r);
 };
 struct Adding : extends<Adding, Base> {

@@ -46,7 +46,8 @@ struct event_record {
 std::string describe(const std::vector<event_record>& trace, std::size_t from) {
   std::string text;
   for (std::size_t i = from; i < trace.size() && i < from + 6; ++i) {
-    text += (trace[i].begin ? " begin " : " end ") + std::to_string(trace[i].task) + "@" + std::to_string(trace[i].at / 1000) + "us";
+    text += (trace[i].begin ? " begin " : " end ") + std::to_string(trace[i].task) + "@" +
+            std::to_string(trace[i].at / 1000) + "us";
   }
   return text;
 }
@@ -54,10 +55,10 @@ std::string describe(const std::vector<event_record>& trace, std::size_t from) {
 struct task_config {
   task_kind kind = task_kind::cyclic;
   std::uint8_t priority = 0;
-  std::uint64_t interval = 0;                    // ns, cyclic
-  std::array<std::uint64_t, 8> costs{};          // ns; cycle n takes costs[n % 8]
+  std::uint64_t interval = 0;            // ns, cyclic
+  std::array<std::uint64_t, 8> costs{};  // ns; cycle n takes costs[n % 8]
   bool has_watchdog = false;
-  std::uint64_t watchdog = 0;                    // ns
+  std::uint64_t watchdog = 0;  // ns
   unsigned sensitivity = 1;
 };
 
@@ -67,7 +68,9 @@ struct configuration {
 };
 
 configuration random_configuration(std::mt19937_64& rng) {
-  const auto pick = [&rng](std::uint64_t lo, std::uint64_t hi) { return std::uniform_int_distribution<std::uint64_t>(lo, hi)(rng); };
+  const auto pick = [&rng](std::uint64_t lo, std::uint64_t hi) {
+    return std::uniform_int_distribution<std::uint64_t>(lo, hi)(rng);
+  };
   configuration c;
   c.tasks = static_cast<std::size_t>(pick(1, max_tasks));
   for (std::size_t i = 0; i < c.tasks; ++i) {
@@ -150,7 +153,8 @@ model_result run_model(const configuration& c) {
       }
       const std::size_t b = static_cast<std::size_t>(best);
       const auto key = [&](std::size_t k) {
-        return std::array<std::uint64_t, 4>{c.task[k].priority, s[k].active ? 0U : 1U, s[k].active ? 0 : s[k].release_time, k};
+        return std::array<std::uint64_t, 4>{c.task[k].priority, s[k].active ? 0U : 1U,
+                                            s[k].active ? 0 : s[k].release_time, k};
       };
       if (key(i) < key(b)) best = static_cast<int>(i);
     }
@@ -248,9 +252,10 @@ model_result run_scheduler(const configuration& c) {
 
 bool same_statistics(const task_statistics& a, const task_statistics& b) {
   return a.cycles == b.cycles && a.last_cycle_time == b.last_cycle_time && a.min_cycle_time == b.min_cycle_time &&
-         a.max_cycle_time == b.max_cycle_time && a.total_cycle_time == b.total_cycle_time && a.last_jitter == b.last_jitter &&
-         a.min_jitter == b.min_jitter && a.max_jitter == b.max_jitter && a.overruns == b.overruns &&
-         a.consecutive_overruns == b.consecutive_overruns && a.watchdog_overruns == b.watchdog_overruns &&
+         a.max_cycle_time == b.max_cycle_time && a.total_cycle_time == b.total_cycle_time &&
+         a.last_jitter == b.last_jitter && a.min_jitter == b.min_jitter && a.max_jitter == b.max_jitter &&
+         a.overruns == b.overruns && a.consecutive_overruns == b.consecutive_overruns &&
+         a.watchdog_overruns == b.watchdog_overruns &&
          a.consecutive_watchdog_overruns == b.consecutive_watchdog_overruns;
 }
 
@@ -259,17 +264,17 @@ TEST_SUITE("scheduler") {
     iecoop_test::fault_recorder faults;
     std::vector<event_record> trace;
     std::array<task_settings, 2> settings{};
-    settings[0].priority = 40;                   // above 31
+    settings[0].priority = 40;  // above 31
     settings[0].interval = LTIME(TIME(1));
-    settings[1].interval = LTIME{};              // cyclic without interval
+    settings[1].interval = LTIME{};  // cyclic without interval
     scheduler<2, recording_cycles> s{settings, &trace};
     CHECK(faults.count == 2);
     CHECK(faults.last_kind == fault_kind::invalid_value);
     CHECK(s.task(0).priority() == 31);
     s.start();
     s.run_until(LTIME(TIME(3)));
-    CHECK(s.task(0).statistics().cycles == 3);   // 0, 1 and 2 ms
-    CHECK(s.task(1).statistics().cycles == 0);   // never released
+    CHECK(s.task(0).statistics().cycles == 3);  // 0, 1 and 2 ms
+    CHECK(s.task(1).statistics().cycles == 0);  // never released
     CHECK(s.base_cycle() == LTIME(TIME(1)));
   }
 
@@ -285,7 +290,7 @@ TEST_SUITE("scheduler") {
     CHECK(s.pick() == S::no_task);  // halted
     s.start();
     s.release_due();
-    REQUIRE(s.pick() == 0);        // the higher priority first
+    REQUIRE(s.pick() == 0);  // the higher priority first
     s.begin_cycle(0);
     s.advance_to(LTIME::from_ticks(300'000));
     s.end_cycle(0);
@@ -297,7 +302,8 @@ TEST_SUITE("scheduler") {
     s.end_cycle(1);
     CHECK(s.pick() == S::no_task);
     CHECK(s.next_release() == LTIME(TIME(1)) + LTIME::from_ticks(500'000));  // freewheeling: 1 ms pause at least
-    CHECK(trace == std::vector<event_record>{{true, 0, 0}, {false, 0, 300'000}, {true, 1, 300'000}, {false, 1, 500'000}});
+    CHECK(trace ==
+          std::vector<event_record>{{true, 0, 0}, {false, 0, 300'000}, {true, 1, 300'000}, {false, 1, 500'000}});
     CHECK(s.task(0).statistics().last_cycle_time == LTIME::from_ticks(300'000));
     CHECK(s.task(1).statistics().last_jitter == LTIME::from_ticks(300'000));
   }
@@ -312,10 +318,11 @@ TEST_SUITE("scheduler against a reference model") {
       const configuration c = random_configuration(rng);
       const model_result expected = run_model(c);
       const model_result actual = run_scheduler(c);
-      const auto mismatch = std::mismatch(expected.trace.begin(), expected.trace.end(), actual.trace.begin(), actual.trace.end());
+      const auto mismatch =
+          std::mismatch(expected.trace.begin(), expected.trace.end(), actual.trace.begin(), actual.trace.end());
       const auto at = static_cast<std::size_t>(mismatch.first - expected.trace.begin());
-      INFO("configuration ", n, " (", c.tasks, " tasks), first difference at event ", at, ": model", describe(expected.trace, at),
-           " | scheduler", describe(actual.trace, at));
+      INFO("configuration ", n, " (", c.tasks, " tasks), first difference at event ", at, ": model",
+           describe(expected.trace, at), " | scheduler", describe(actual.trace, at));
       REQUIRE(expected.trace == actual.trace);
       REQUIRE(expected.faulted_task == actual.faulted_task);
       for (std::size_t i = 0; i < c.tasks; ++i) {

@@ -351,10 +351,10 @@ TEST_SUITE("ST meaning: variables") {
       var<REAL> rSum;
       var<TIME> tTotal;
       void body() {
-        wFlags |= 0x0100;    // wFlags := wFlags OR 16#100;
-        wFlags &= 0x0FF0;    // wFlags := wFlags AND 16#FF0;
-        wKept ^= 0x0003;     // wKept := wKept XOR 3;
-        iCount += 2;         // iCount := iCount + 2;
+        wFlags |= 0x0100;  // wFlags := wFlags OR 16#100;
+        wFlags &= 0x0FF0;  // wFlags := wFlags AND 16#FF0;
+        wKept ^= 0x0003;   // wKept := wKept XOR 3;
+        iCount += 2;       // iCount := iCount + 2;
         iCount *= 5;
         iCount -= 1;
         ++iCount;
@@ -390,8 +390,8 @@ TEST_SUITE("ST meaning: variables") {
       var<INT> iAt;
       var<STRING<20>> sHead;
       void body() {
-        iAt = FIND(sLine, ":");           // iAt := FIND(sLine, ':');
-        sHead = LEFT(sLine, iAt - 1);     // sHead := LEFT(sLine, iAt - 1);
+        iAt = FIND(sLine, ":");        // iAt := FIND(sLine, ':');
+        sHead = LEFT(sLine, iAt - 1);  // sHead := LEFT(sLine, iAt - 1);
       }
     };
     FB_Text fb;

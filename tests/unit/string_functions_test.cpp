@@ -31,7 +31,7 @@ TEST_SUITE("string functions") {
   }
 
   TEST_CASE("LEFT and RIGHT, including lengths outside the string") {
-    CHECK(LEFT("SUSI", 3) == "SUS");  // CODESYS: LEFT('SUSI', 3) = 'SUS'
+    CHECK(LEFT("SUSI", 3) == "SUS");   // CODESYS: LEFT('SUSI', 3) = 'SUS'
     CHECK(RIGHT("SUSI", 3) == "USI");  // CODESYS: RIGHT('SUSI', 3) = 'USI'
     CHECK(LEFT("SUSI", 4) == "SUSI");
     CHECK(LEFT("SUSI", 10) == "SUSI");  // longer than the string: all of it
@@ -75,8 +75,8 @@ TEST_SUITE("string functions") {
     CHECK(INSERT("SUSI", "XY", 2) == "SUXYSI");  // CODESYS: INSERT('SUSI', 'XY', 2)
     CHECK(INSERT("SUSI", "XY", 0) == "XYSUSI");  // 0: before the first character
     CHECK(INSERT("SUSI", "XY", 4) == "SUSIXY");  // after the last character
-    CHECK(INSERT("SUSI", "XY", 5) == "SUSI");  // beyond the string: unchanged
-    CHECK(INSERT("SUSI", "XY", -1) == "SUSI");  // negative: unchanged (CODESYS)
+    CHECK(INSERT("SUSI", "XY", 5) == "SUSI");    // beyond the string: unchanged
+    CHECK(INSERT("SUSI", "XY", -1) == "SUSI");   // negative: unchanged (CODESYS)
     CHECK(INSERT("", "XY", 0) == "XY");
     CHECK(INSERT("SUSI", "", 2) == "SUSI");
   }
@@ -96,9 +96,9 @@ TEST_SUITE("string functions") {
   TEST_CASE("REPLACE, including positions and lengths outside the string") {
     CHECK(REPLACE("SUXYSI", "K", 2, 3) == "SUKSI");  // CODESYS: REPLACE('SUXYSI', 'K', 2, 3)
     CHECK(REPLACE("SUSI", "XY", 0, 3) == "SUXYSI");  // L = 0: an insertion before P
-    CHECK(REPLACE("SUSI", "XY", 10, 2) == "SXY");  // to the end
+    CHECK(REPLACE("SUSI", "XY", 10, 2) == "SXY");    // to the end
     CHECK(REPLACE("SUSI", "XY", 1, 5) == "SUSIXY");  // P = LEN + 1: appends
-    CHECK(REPLACE("SUSI", "XY", 1, 6) == "SUSI");  // beyond: unchanged
+    CHECK(REPLACE("SUSI", "XY", 1, 6) == "SUSI");    // beyond: unchanged
     CHECK(REPLACE("SUSI", "XY", 1, 0) == "SUSI");
     CHECK(REPLACE("SUSI", "XY", -1, 1) == "SUSI");
     CHECK(REPLACE("SUSI", "", 2, 2) == "SI");

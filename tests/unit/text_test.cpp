@@ -29,7 +29,7 @@ constexpr valid_duration valid_times[] = {
     {"T#3m0.5s", 180500000000},  // a fraction in the last unit
     {"T#1h_30m", 5400000000000},
     {"T#1_000ms", 1000000000},
-    {"T#1D2H3M4S5MS", 93784005000000},  // units in upper case
+    {"T#1D2H3M4S5MS", 93784005000000},         // units in upper case
     {"T#49d17h2m47s295ms", 4294967295000000},  // the largest TIME
     {"T#0.001s", 1000000},
     {"T#2000us", 2000000},  // whole milliseconds, written in us
@@ -186,7 +186,9 @@ TEST_SUITE("IEC literal text") {
 
   TEST_CASE("values format back to IEC text") {
     char text[64];
-    const auto show = [&text](auto value) { return std::string_view(text, static_cast<std::size_t>(to_text(text, value) - text)); };
+    const auto show = [&text](auto value) {
+      return std::string_view(text, static_cast<std::size_t>(to_text(text, value) - text));
+    };
     CHECK(show(TIME()) == "T#0ms");
     CHECK(show(TIME(12)) == "T#12ms");
     CHECK(show(TIME(3723004)) == "T#1h2m3s4ms");

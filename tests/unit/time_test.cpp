@@ -13,24 +13,31 @@ using iecoop_test::fault_recorder;
 using iecoop_test::opaque;
 
 // TIME: unsigned 32-bit milliseconds; LTIME: unsigned 64-bit nanoseconds (CDS-TIME).
-static_assert(sizeof(TIME) == 4 && std::is_same_v<TIME::rep, std::uint32_t> && std::is_same_v<TIME::period, std::milli>);
-static_assert(sizeof(LTIME) == 8 && std::is_same_v<LTIME::rep, std::uint64_t> && std::is_same_v<LTIME::period, std::nano>);
+static_assert(sizeof(TIME) == 4 && std::is_same_v<TIME::rep, std::uint32_t> &&
+              std::is_same_v<TIME::period, std::milli>);
+static_assert(sizeof(LTIME) == 8 && std::is_same_v<LTIME::rep, std::uint64_t> &&
+              std::is_same_v<LTIME::period, std::nano>);
 static_assert(std::is_trivially_copyable_v<TIME> && std::is_trivially_copyable_v<LTIME>);
-static_assert(TIME::max().count() == 4294967295u);   // T#49d17h2m47s295ms
+static_assert(TIME::max().count() == 4294967295u);  // T#49d17h2m47s295ms
 static_assert(LTIME::max().count() == 18446744073709551615u);
 
 // std::chrono in: implicit where no precision is lost.
-static_assert(std::is_convertible_v<std::chrono::milliseconds, TIME> && std::is_convertible_v<std::chrono::hours, TIME>);
-static_assert(!std::is_convertible_v<std::chrono::microseconds, TIME> && !std::is_constructible_v<TIME, std::chrono::microseconds>);
+static_assert(std::is_convertible_v<std::chrono::milliseconds, TIME> &&
+              std::is_convertible_v<std::chrono::hours, TIME>);
+static_assert(!std::is_convertible_v<std::chrono::microseconds, TIME> &&
+              !std::is_constructible_v<TIME, std::chrono::microseconds>);
 static_assert(std::is_convertible_v<std::chrono::nanoseconds, LTIME>);
 static_assert(!std::is_constructible_v<TIME, std::chrono::duration<double>>);
 // std::chrono out: implicit to durations at least as fine.
-static_assert(std::is_convertible_v<TIME, std::chrono::milliseconds> && std::is_convertible_v<TIME, std::chrono::nanoseconds>);
+static_assert(std::is_convertible_v<TIME, std::chrono::milliseconds> &&
+              std::is_convertible_v<TIME, std::chrono::nanoseconds>);
 static_assert(!std::is_convertible_v<TIME, std::chrono::seconds>);
 static_assert(std::is_convertible_v<TIME, std::chrono::duration<double>>);
-static_assert(std::is_convertible_v<LTIME, std::chrono::nanoseconds> && !std::is_convertible_v<LTIME, std::chrono::microseconds>);
+static_assert(std::is_convertible_v<LTIME, std::chrono::nanoseconds> &&
+              !std::is_convertible_v<LTIME, std::chrono::microseconds>);
 // TIME widens to LTIME implicitly; LTIME narrows to TIME only explicitly.
-static_assert(std::is_convertible_v<TIME, LTIME> && !std::is_convertible_v<LTIME, TIME> && std::is_constructible_v<TIME, LTIME>);
+static_assert(std::is_convertible_v<TIME, LTIME> && !std::is_convertible_v<LTIME, TIME> &&
+              std::is_constructible_v<TIME, LTIME>);
 // An integer constant counts milliseconds (PT := 300 in CODESYS); other types do not convert.
 static_assert(TIME(300).count() == 300);
 static_assert(!std::is_convertible_v<DINT, TIME> && !std::is_convertible_v<REAL, TIME>);
@@ -74,7 +81,7 @@ TEST_SUITE("TIME and LTIME") {
     const LTIME l = t;
     CHECK(l.count() == 1500000000u);
     const LTIME fine = 1999999us;
-    CHECK(static_cast<TIME>(fine) == 1999ms);  // truncated to whole milliseconds
+    CHECK(static_cast<TIME>(fine) == 1999ms);        // truncated to whole milliseconds
     const LTIME huge = std::chrono::hours(24 * 60);  // 60 days: beyond TIME's 49.7 days
     CHECK(static_cast<TIME>(huge).count() == static_cast<std::uint32_t>(5184000000u % 4294967296u));
   }
@@ -107,7 +114,7 @@ TEST_SUITE("TIME and LTIME") {
     u /= 4;
     CHECK(u == 75ms);
     CHECK(opaque(TIME::max()) * 2 == TIME::max() - TIME(1));  // wraps
-    CHECK(TIME(10) * -1 == TIME::max() - TIME(9));  // a negative product wraps too
+    CHECK(TIME(10) * -1 == TIME::max() - TIME(9));            // a negative product wraps too
   }
 
   TEST_CASE("division of a duration by zero reports a fault and yields T#0ms") {

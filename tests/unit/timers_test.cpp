@@ -51,7 +51,7 @@ TEST_SUITE("standard blocks: TON") {
     check_timer<TON>({
         //  t    IN   PT    Q      ET
         {0, false, 100, false, 0},
-        {10, true, 100, false, 0},    // rising edge: the timer starts, ET is not written yet
+        {10, true, 100, false, 0},  // rising edge: the timer starts, ET is not written yet
         {20, true, 100, false, 10},
         {109, true, 100, false, 99},
         {110, true, 100, true, 100},  // elapsed = PT exactly: Q rises (>=)
@@ -90,7 +90,7 @@ TEST_SUITE("standard blocks: TON") {
     check_timer<TON>({
         {0, true, 100, false, 0},
         {40, true, 100, false, 40},
-        {60, true, 200, false, 60},   // raised: goes on counting
+        {60, true, 200, false, 60},  // raised: goes on counting
         {150, true, 200, false, 150},
         {160, true, 120, true, 120},  // lowered below the elapsed time: expires now, ET = new PT
         {170, true, 120, true, 120},
@@ -157,9 +157,9 @@ TEST_SUITE("standard blocks: TON") {
 TEST_SUITE("standard blocks: TOF") {
   TEST_CASE("the IEC timing diagram: Q held for PT after IN falls") {
     check_timer<TOF>({
-        {0, false, 100, false, 0},   // IN FALSE on the first call: no falling edge
+        {0, false, 100, false, 0},  // IN FALSE on the first call: no falling edge
         {10, true, 100, true, 0},
-        {50, false, 100, true, 0},   // falling edge: the timer starts, ET not written yet
+        {50, false, 100, true, 0},  // falling edge: the timer starts, ET not written yet
         {80, false, 100, true, 30},
         {149, false, 100, true, 99},
         {150, false, 100, false, 100},  // elapsed = PT: Q falls, ET = PT
@@ -213,9 +213,9 @@ TEST_SUITE("standard blocks: TP") {
   TEST_CASE("the IEC timing diagram: a pulse of PT, ET held while IN stays TRUE") {
     check_timer<TP>({
         {0, false, 100, false, 0},
-        {10, true, 100, true, 0},     // rising edge: pulse starts, ET not written yet
+        {10, true, 100, true, 0},  // rising edge: pulse starts, ET not written yet
         {60, true, 100, true, 50},
-        {110, true, 100, false, 100}, // the pulse is over; IN still TRUE: ET holds PT
+        {110, true, 100, false, 100},  // the pulse is over; IN still TRUE: ET holds PT
         {300, true, 100, false, 100},
         {310, false, 100, false, 0},  // IN FALSE: ET back to 0
     });
@@ -223,9 +223,7 @@ TEST_SUITE("standard blocks: TP") {
 
   TEST_CASE("the pulse ends while IN is already FALSE: ET goes to 0 in the same call") {
     check_timer<TP>({
-        {0, true, 100, true, 0},
-        {20, false, 100, true, 20},
-        {100, false, 100, false, 0},  // ET = PT is never visible
+        {0, true, 100, true, 0}, {20, false, 100, true, 20}, {100, false, 100, false, 0},  // ET = PT is never visible
     });
   }
 
@@ -233,13 +231,13 @@ TEST_SUITE("standard blocks: TP") {
     check_timer<TP>({
         {0, true, 100, true, 0},
         {30, false, 100, true, 30},
-        {40, true, 100, true, 40},   // a new edge while the pulse runs
+        {40, true, 100, true, 40},  // a new edge while the pulse runs
         {50, false, 100, true, 50},
         {60, true, 100, true, 60},
         {100, true, 100, false, 100},  // the pulse ends at 100 as started, not at 160
         {120, true, 100, false, 100},  // IN still TRUE: no new pulse
         {130, false, 100, false, 0},
-        {140, true, 100, true, 0},     // the next edge starts the next pulse
+        {140, true, 100, true, 0},  // the next edge starts the next pulse
     });
   }
 

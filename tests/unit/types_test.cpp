@@ -46,26 +46,35 @@ static_assert(AnyReal<REAL> && AnyReal<LREAL> && !AnyReal<float>);
 static_assert(AnyNum<DINT> && AnyNum<LREAL> && !AnyNum<DWORD>);
 
 // IEC's implicit widening: within a family, and unsigned -> wider signed.
-static_assert(std::is_convertible_v<SINT, INT> && std::is_convertible_v<INT, DINT> && std::is_convertible_v<DINT, LINT>);
+static_assert(std::is_convertible_v<SINT, INT> && std::is_convertible_v<INT, DINT> &&
+              std::is_convertible_v<DINT, LINT>);
 static_assert(std::is_convertible_v<USINT, UINT> && std::is_convertible_v<UDINT, ULINT>);
-static_assert(std::is_convertible_v<USINT, INT> && std::is_convertible_v<UINT, DINT> && std::is_convertible_v<UDINT, LINT>);
+static_assert(std::is_convertible_v<USINT, INT> && std::is_convertible_v<UINT, DINT> &&
+              std::is_convertible_v<UDINT, LINT>);
 static_assert(std::is_convertible_v<BYTE, WORD> && std::is_convertible_v<DWORD, LWORD>);
 // ... and nothing else: narrowing, sign changes and family changes need a conversion.
 static_assert(!std::is_convertible_v<DINT, INT> && !std::is_convertible_v<LINT, DINT>);
-static_assert(!std::is_convertible_v<INT, UINT> && !std::is_convertible_v<UINT, INT> && !std::is_convertible_v<UDINT, DINT>);
-static_assert(!std::is_convertible_v<BYTE, USINT> && !std::is_convertible_v<USINT, BYTE> && !std::is_convertible_v<WORD, INT>);
+static_assert(!std::is_convertible_v<INT, UINT> && !std::is_convertible_v<UINT, INT> &&
+              !std::is_convertible_v<UDINT, DINT>);
+static_assert(!std::is_convertible_v<BYTE, USINT> && !std::is_convertible_v<USINT, BYTE> &&
+              !std::is_convertible_v<WORD, INT>);
 static_assert(std::is_constructible_v<INT, DINT> && std::is_constructible_v<UINT, INT>);  // explicitly: yes
 // C++ integers: implicit where every value fits (at run time too).
-static_assert(std::is_convertible_v<std::int16_t, INT> && std::is_convertible_v<int, DINT> && std::is_convertible_v<std::uint32_t, UDINT>);
+static_assert(std::is_convertible_v<std::int16_t, INT> && std::is_convertible_v<int, DINT> &&
+              std::is_convertible_v<std::uint32_t, UDINT>);
 // BOOL comes from bool only; INT is no condition.
-static_assert(!std::is_convertible_v<int, BOOL> && !std::is_constructible_v<BOOL, int> && std::is_convertible_v<bool, BOOL>);
+static_assert(!std::is_convertible_v<int, BOOL> && !std::is_constructible_v<BOOL, int> &&
+              std::is_convertible_v<bool, BOOL>);
 static_assert(!std::is_convertible_v<INT, bool> && !std::is_constructible_v<bool, INT>);
 // A BOOL is a condition wherever C++ wants one (`bool ok = b;`, std algorithms, doctest).
 static_assert(std::is_convertible_v<BOOL, bool>);
 // REAL: exact integers convert implicitly, LREAL and DINT do not (C0197 in CODESYS).
-static_assert(std::is_convertible_v<INT, REAL> && std::is_convertible_v<UINT, REAL> && !std::is_convertible_v<DINT, REAL>);
-static_assert(std::is_convertible_v<DINT, LREAL> && !std::is_convertible_v<LINT, LREAL> && !std::is_convertible_v<WORD, REAL>);
-static_assert(std::is_convertible_v<REAL, LREAL> && !std::is_convertible_v<LREAL, REAL> && std::is_constructible_v<REAL, LREAL>);
+static_assert(std::is_convertible_v<INT, REAL> && std::is_convertible_v<UINT, REAL> &&
+              !std::is_convertible_v<DINT, REAL>);
+static_assert(std::is_convertible_v<DINT, LREAL> && !std::is_convertible_v<LINT, LREAL> &&
+              !std::is_convertible_v<WORD, REAL>);
+static_assert(std::is_convertible_v<REAL, LREAL> && !std::is_convertible_v<LREAL, REAL> &&
+              std::is_constructible_v<REAL, LREAL>);
 
 // Arithmetic yields an intermediate result of the wider type, as IEC's implicit widening
 // does; bitwise operations stay in the type.
@@ -87,7 +96,8 @@ concept addable = requires(A a, B b) {
 }  // namespace
 
 TEST_SUITE("elementary types") {
-  TEST_CASE_TEMPLATE("every variable starts at zero", T, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD) {
+  TEST_CASE_TEMPLATE("every variable starts at zero", T, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD,
+                     DWORD, LWORD) {
     T value;
     CHECK(value == 0);
     CHECK(T{} == T(typename T::rep{0}));
@@ -102,7 +112,8 @@ TEST_SUITE("elementary types") {
     CHECK(l == 0.0);
   }
 
-  TEST_CASE_TEMPLATE("integer arithmetic wraps around at the type's limits when assigned", T, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD) {
+  TEST_CASE_TEMPLATE("integer arithmetic wraps around at the type's limits when assigned", T, SINT, INT, DINT, LINT,
+                     USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD) {
     // opaque() keeps the compiler from folding: the operations really run, under UBSan
     // in CI, and none of them may be undefined behaviour.
     const T max = opaque(std::numeric_limits<T>::max());
@@ -213,7 +224,8 @@ TEST_SUITE("elementary types") {
   TEST_CASE("the most negative value divided by -1 wraps, and its MOD -1 is 0") {
     fault_recorder faults;
     // In a register as wide as the type, the quotient wraps at once.
-    CHECK(opaque(LINT(std::numeric_limits<std::int64_t>::min())) / opaque(LINT(-1)) == std::numeric_limits<std::int64_t>::min());
+    CHECK(opaque(LINT(std::numeric_limits<std::int64_t>::min())) / opaque(LINT(-1)) ==
+          std::numeric_limits<std::int64_t>::min());
     const DINT d = opaque(DINT(-2147483647 - 1)) / opaque(DINT(-1));
     CHECK(d == -2147483647 - 1);
     CHECK(opaque(DINT(-2147483647 - 1)) % opaque(DINT(-1)) == 0);
@@ -317,8 +329,10 @@ TEST_SUITE("elementary types") {
     a ^= TRUE;
     CHECK(a == FALSE);
     int branch = 0;
-    if (a) branch = 1;
-    else if (!a) branch = 2;
+    if (a)
+      branch = 1;
+    else if (!a)
+      branch = 2;
     CHECK(branch == 2);
     const BOOL comparison = INT(5) > 3;
     CHECK(comparison == TRUE);

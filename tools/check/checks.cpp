@@ -32,17 +32,16 @@ struct method_variables {
 /// The function whose code the walk is in (a lambda's code is its enclosing function's).
 struct code_context {
   CXCursor function;
-  CXCursor owner_class;                 // the class of a member function, else null
+  CXCursor owner_class;                // the class of a member function, else null
   std::vector<method_variables> vars;  // for a method of a block: its args<Vars> parameters
 };
 
 // Lifecycle methods are called by iecoop through the block's own type, not dispatched.
 const std::set<std::string> not_dispatched = {"FB_Init", "FB_Reinit", "FB_Exit"};
 
-const std::set<std::string> assignment_operators = {"operator=",  "operator+=", "operator-=",  "operator*=",
-                                                    "operator/=", "operator%=", "operator&=",  "operator|=",
-                                                    "operator^=", "operator<<=", "operator>>=", "operator++",
-                                                    "operator--"};
+const std::set<std::string> assignment_operators = {
+    "operator=",  "operator+=", "operator-=",  "operator*=",  "operator/=", "operator%=", "operator&=",
+    "operator|=", "operator^=", "operator<<=", "operator>>=", "operator++", "operator--"};
 
 class checker {
  public:
@@ -187,7 +186,8 @@ class checker {
     constexpr std::size_t length = sizeof("operator") - 1;
     if (name.size() <= length || name.compare(0, length, "operator") != 0) return false;
     const char next = name[length];
-    return !((next >= 'a' && next <= 'z') || (next >= 'A' && next <= 'Z') || (next >= '0' && next <= '9') || next == '_');
+    return !((next >= 'a' && next <= 'z') || (next >= 'A' && next <= 'Z') || (next >= '0' && next <= '9') ||
+             next == '_');
   }
 
   /// Check 1 (a method hides its base's instead of overriding it) and check 4 (a variable
@@ -231,8 +231,7 @@ class checker {
         if (is_dispatchable_method(member) && spelling(member) == name) same_name.push_back(member);
       }
       if (same_name.empty()) continue;  // the name is declared further up, if anywhere
-      if (std::any_of(same_name.begin(), same_name.end(),
-                      [&](CXCursor m) { return overridden.count(usr(m)) != 0; })) {
+      if (std::any_of(same_name.begin(), same_name.end(), [&](CXCursor m) { return overridden.count(usr(m)) != 0; })) {
         return;
       }
       const auto non_virtual = std::find_if(same_name.begin(), same_name.end(),
@@ -247,9 +246,11 @@ class checker {
                {note{location_of(*non_virtual), hidden + " is declared here"}});
       } else {
         report(method,
-               derived + " does not override " + hidden + " (their parameters differ), so it hides it, and a call "
-                   "through a reference to " + class_name(base) + " runs " + hidden + "; give " + derived +
-                   " the parameters of " + hidden + " and mark it override",
+               derived + " does not override " + hidden +
+                   " (their parameters differ), so it hides it, and a call "
+                   "through a reference to " +
+                   class_name(base) + " runs " + hidden + "; give " + derived + " the parameters of " + hidden +
+                   " and mark it override",
                {note{location_of(same_name.front()), hidden + " is declared here"}});
       }
       return;
@@ -266,8 +267,8 @@ class checker {
         report(field,
                class_name(cls) + " declares " + name + ", which its base " + class_name(base) +
                    " already declares, so the code of the two blocks uses two different variables (CODESYS rejects "
-                   "a variable that the base block declares); remove " + class_name(cls) + "::" + name +
-                   " and use " + base_variable,
+                   "a variable that the base block declares); remove " +
+                   class_name(cls) + "::" + name + " and use " + base_variable,
                {note{location_of(member), base_variable + " is declared here"}});
         return;
       }
@@ -335,16 +336,14 @@ class checker {
         case CXCursor_CallExpr: {  // an element (`[]`) or member (`->`) of the local itself
           const CXCursor callee = clang_getCursorReferenced(expression);
           const std::string name = spelling(callee);
-          if ((name != "operator[]" && name != "operator->") ||
-              !is_variable_member(callee) ||
+          if ((name != "operator[]" && name != "operator->") || !is_variable_member(callee) ||
               clang_Cursor_getNumArguments(expression) < 1) {
             return std::nullopt;
           }
           expression = clang_Cursor_getArgument(expression, 0);
           break;
         }
-        default:
-          return std::nullopt;
+        default: return std::nullopt;
       }
     }
     return std::nullopt;
@@ -365,7 +364,7 @@ class checker {
       const std::vector<CXCursor> parts = children(call);
       if (parts.empty()) return;
       const std::vector<CXCursor> object = children(parts.front());  // the MemberRefExpr `x.ref`
-      if (object.empty()) return;                                     // this->ref(): inside local itself
+      if (object.empty()) return;                                    // this->ref(): inside local itself
       target = written_local(object.front());
       how = " through ref()";
     } else if (name == "operator>>" && is_iecoop_class(clang_getCursorSemanticParent(callee), "param_name")) {
@@ -385,9 +384,9 @@ class checker {
     const std::string variable = spelling(target.first);
     const std::string block = class_name(owner);
     report(target.first, context_name(context) + " writes " + variable + ", a VAR of " + block + "," + how +
-                              " from outside the block (CODESYS lets only " + block +
-                              " and the blocks that extend it write its VAR); write it in a method of " + block +
-                              ", or make it a VAR_INPUT (a plain member listed in VAR_INPUT)");
+                             " from outside the block (CODESYS lets only " + block +
+                             " and the blocks that extend it write its VAR); write it in a method of " + block +
+                             ", or make it a VAR_INPUT (a plain member listed in VAR_INPUT)");
   }
 
   /// The spelling of a built-in operator expression's operator: the token after its first

@@ -198,11 +198,12 @@ bool check(CXIndex index, const job& task, std::vector<finding>& findings) {
   argv.reserve(task.arguments.size());
   for (const std::string& a : task.arguments) argv.push_back(a.c_str());
   char here[PATH_MAX];
-  const bool moved = !task.directory.empty() && getcwd(here, sizeof here) != nullptr && chdir(task.directory.c_str()) == 0;
+  const bool moved =
+      !task.directory.empty() && getcwd(here, sizeof here) != nullptr && chdir(task.directory.c_str()) == 0;
   CXTranslationUnit unit = nullptr;
-  const CXErrorCode error = clang_parseTranslationUnit2(index, task.file_in_arguments ? nullptr : task.file.c_str(),
-                                                        argv.data(), static_cast<int>(argv.size()), nullptr, 0,
-                                                        CXTranslationUnit_None, &unit);
+  const CXErrorCode error =
+      clang_parseTranslationUnit2(index, task.file_in_arguments ? nullptr : task.file.c_str(), argv.data(),
+                                  static_cast<int>(argv.size()), nullptr, 0, CXTranslationUnit_None, &unit);
   bool ok = error == CXError_Success && unit != nullptr;
   if (!ok) {
     std::fprintf(stderr, "iecoop-check: error: %s: libclang could not parse it (error %d)\n", task.file.c_str(),
@@ -253,7 +254,8 @@ int main(int argc, char** argv) {
   // A header included by several files reports once; all in the order of the files.
   const auto key = [](const finding& f) { return std::tie(f.where.file, f.where.line, f.where.column, f.message); };
   std::sort(findings.begin(), findings.end(), [&](const finding& a, const finding& b) { return key(a) < key(b); });
-  findings.erase(std::unique(findings.begin(), findings.end(), [&](const finding& a, const finding& b) { return key(a) == key(b); }),
+  findings.erase(std::unique(findings.begin(), findings.end(),
+                             [&](const finding& a, const finding& b) { return key(a) == key(b); }),
                  findings.end());
   for (const finding& f : findings) {
     std::printf("%s:%u:%u: error: iecoop-check: %s\n", f.where.file.c_str(), f.where.line, f.where.column,

@@ -116,8 +116,8 @@ std::optional<std::string> parse_pin_value(std::string_view text, T& value) {
         << +std::numeric_limits<rep>::min() << " to " << +std::numeric_limits<rep>::max();
     if (!magnitude) return why.str();
     if (negative) {
-      if (*magnitude > 0 && !(std::is_signed_v<rep> &&
-                              *magnitude <= static_cast<std::uint64_t>(std::numeric_limits<rep>::max()) + 1u)) {
+      if (*magnitude > 0 &&
+          !(std::is_signed_v<rep> && *magnitude <= static_cast<std::uint64_t>(std::numeric_limits<rep>::max()) + 1u)) {
         return why.str();
       }
       value = T(static_cast<rep>(-static_cast<std::int64_t>(*magnitude)));
@@ -206,8 +206,9 @@ std::vector<input_pin<B>> input_pins(bool is_counter, std::index_sequence<I...>)
 template <class B, std::size_t... I>
 std::vector<output_pin<B>> output_pins(std::index_sequence<I...>) {
   using pins = outputs_of<B>;
-  return {output_pin<B>{column_name<pin<pins, I>>(),
-                        [](const B& block) { return format_pin_value(pin_value_t<pin<pins, I>>((block.*pin<pins, I>).get())); }}...};
+  return {output_pin<B>{column_name<pin<pins, I>>(), [](const B& block) {
+                          return format_pin_value(pin_value_t<pin<pins, I>>((block.*pin<pins, I>).get()));
+                        }}...};
 }
 
 // --- The replay -------------------------------------------------------------------------
@@ -249,12 +250,14 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
     const std::string& name = (*header)[c];
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       if (name == inputs[i].column || (!inputs[i].alternative.empty() && name == inputs[i].alternative)) {
-        if (seen[i]) throw input_error{"line 1 (header), column \"" + name + "\": input " + inputs[i].column + " is given twice"};
+        if (seen[i])
+          throw input_error{"line 1 (header), column \"" + name + "\": input " + inputs[i].column + " is given twice"};
         seen[i] = true;
         column_input[c] = static_cast<std::ptrdiff_t>(i);
       }
     }
-    if (name == "cycle" || name == "time_ms") throw input_error{"line 1 (header), column \"" + name + "\": given twice"};
+    if (name == "cycle" || name == "time_ms")
+      throw input_error{"line 1 (header), column \"" + name + "\": given twice"};
   }
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     if (!seen[i]) {
@@ -282,22 +285,23 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
   for (std::size_t l = 1; l < last; ++l) {
     const std::size_t line_number = l + 1;
     const auto fields = split_fields(lines[l]);
-    if (!fields) throw input_error{where(line_number, "") + ": a quoted field is not closed, or text follows its closing quote"};
+    if (!fields)
+      throw input_error{where(line_number, "") + ": a quoted field is not closed, or text follows its closing quote"};
     if (fields->size() != header->size()) {
-      throw input_error{where(line_number, "") + ": " + std::to_string(fields->size()) + " fields, but the header has " +
-                        std::to_string(header->size())};
+      throw input_error{where(line_number, "") + ": " + std::to_string(fields->size()) +
+                        " fields, but the header has " + std::to_string(header->size())};
     }
     if (!parse_unsigned((*fields)[0], std::numeric_limits<std::uint64_t>::max())) {
       throw input_error{where(line_number, "cycle") + ": \"" + (*fields)[0] + "\" is not a whole number"};
     }
     const auto time_ms = parse_unsigned((*fields)[1], max_time_ms);
     if (!time_ms) {
-      throw input_error{where(line_number, "time_ms") + ": \"" + (*fields)[1] + "\" is not a whole number of milliseconds from 0 to " +
-                        std::to_string(max_time_ms)};
+      throw input_error{where(line_number, "time_ms") + ": \"" + (*fields)[1] +
+                        "\" is not a whole number of milliseconds from 0 to " + std::to_string(max_time_ms)};
     }
     if (l > 1 && *time_ms < previous_ms) {
-      throw input_error{where(line_number, "time_ms") + ": time goes backwards, from " + std::to_string(previous_ms) + " to " +
-                        std::to_string(*time_ms) + " ms"};
+      throw input_error{where(line_number, "time_ms") + ": time goes backwards, from " + std::to_string(previous_ms) +
+                        " to " + std::to_string(*time_ms) + " ms"};
     }
     previous_ms = *time_ms;
 

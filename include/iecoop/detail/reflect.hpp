@@ -63,7 +63,7 @@ constexpr std::string_view signature_of() noexcept {
 #if defined(__GNUC__) || defined(__clang__)
   return __PRETTY_FUNCTION__;
 #else
-#  error "iecoop: reflection needs GCC or Clang (__PRETTY_FUNCTION__)"
+#error "iecoop: reflection needs GCC or Clang (__PRETTY_FUNCTION__)"
 #endif
 }
 
@@ -75,9 +75,9 @@ struct reflected_object {
   const T value;
 };
 #if defined(__clang__)
-#  pragma clang diagnostic push
-#  pragma clang diagnostic ignored "-Wundefined-var-template"
-#  pragma clang diagnostic ignored "-Wundefined-internal"
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wundefined-var-template"
+#pragma clang diagnostic ignored "-Wundefined-internal"
 #endif
 template <class T>
 extern const reflected_object<T> declared_only;
@@ -96,7 +96,7 @@ consteval auto field_pointer_of() noexcept {
   });
 }
 #if defined(__clang__)
-#  pragma clang diagnostic pop
+#pragma clang diagnostic pop
 #endif
 
 }  // namespace detail

@@ -34,7 +34,8 @@ class single_instance {
   /// The live instance (or, reporting a fault, a scratch one).
   static Self& instance() {
     if (live_ == nullptr) {
-      fault(fault_kind::invalid_value, "used before its instance exists (a PROGRAM or global variable list); a scratch instance stands in");
+      fault(fault_kind::invalid_value,
+            "used before its instance exists (a PROGRAM or global variable list); a scratch instance stands in");
       return scratch();
     }
     return *live_;

@@ -67,7 +67,7 @@ constexpr std::string_view type_signature() noexcept {
 #if defined(__GNUC__) || defined(__clang__)
   return __PRETTY_FUNCTION__;
 #else
-#  error "iecoop: type names need GCC or Clang (__PRETTY_FUNCTION__)"
+#error "iecoop: type names need GCC or Clang (__PRETTY_FUNCTION__)"
 #endif
 }
 

@@ -68,7 +68,7 @@ concept wrapper_partner = !std::is_class_v<std::remove_cvref_t<X>> || value_wrap
                           is_iec_value<std::remove_cvref_t<X>>::value || is_std_string<std::remove_cvref_t<X>>::value;
 
 template <class A, class B>
-concept wrapper_operands = (value_wrapper<A> || value_wrapper<B>) && wrapper_partner<A> && wrapper_partner<B>;
+concept wrapper_operands = (value_wrapper<A> || value_wrapper<B>)&&wrapper_partner<A> && wrapper_partner<B>;
 
 // A wrapped integer with a C++ number (`count + 1`) is left to the integer's own operators,
 // which check the constant while compiling (the wrapper converts to the integer for them).
@@ -166,12 +166,13 @@ constexpr decltype(auto) arrow_of(T& value) noexcept {
 /// overload, which converts it to T at the call (and checks a constant's range there).
 template <class W, class V>
 concept compound_operand = writable_wrapper<W> && !std::is_same_v<unwrapped_t<V>, unwrapped_t<W>> &&
-                           !(std::is_arithmetic_v<std::remove_cvref_t<V>> && AnyInteger<unwrapped_t<W>>) &&
-                           !std::is_same_v<unwrapped_t<V>, BOOL>;
+                           !(std::is_arithmetic_v<std::remove_cvref_t<V>> &&
+                             AnyInteger<unwrapped_t<W>>)&&!std::is_same_v<unwrapped_t<V>, BOOL>;
 /// A BOOL on the right of a number's compound assignment (`nCount += bPulse`): ST's
 /// `nCount := nCount + bPulse` does not compile, and this says so in one message.
 template <class W, class V>
-concept bool_into_number = writable_wrapper<W> && std::is_same_v<unwrapped_t<V>, BOOL> && number_for_bool<unwrapped_t<W>>;
+concept bool_into_number =
+    writable_wrapper<W> && std::is_same_v<unwrapped_t<V>, BOOL> && number_for_bool<unwrapped_t<W>>;
 
 /// `w = w <op> v` for a wrapper w: read, combine, assign back.
 template <class W, class Op, class V>
@@ -289,7 +290,8 @@ constexpr W&& operator+=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator+=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v))) {
+constexpr auto operator+=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
@@ -302,7 +304,8 @@ constexpr W&& operator-=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator-=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v))) {
+constexpr auto operator-=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
@@ -329,7 +332,8 @@ constexpr W&& operator/=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator/=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v))) {
+constexpr auto operator/=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
@@ -342,7 +346,8 @@ constexpr W&& operator%=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator%=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v))) {
+constexpr auto operator%=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
@@ -355,7 +360,8 @@ constexpr W&& operator&=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator&=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v))) {
+constexpr auto operator&=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
@@ -368,7 +374,8 @@ constexpr W&& operator|=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator|=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v))) {
+constexpr auto operator|=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
@@ -381,7 +388,8 @@ constexpr W&& operator^=(W&& w, V&&) {
   return std::forward<W>(w);
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
-constexpr auto operator^=(W&& w, V&& v) -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v))) {
+constexpr auto operator^=(W&& w, V&& v)
+    -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v))) {
   return detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v));
 }
 

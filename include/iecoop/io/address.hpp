@@ -185,7 +185,8 @@ constexpr address_parse parse_address(std::string_view text) noexcept {
   if (i < text.size() && text[i] == '.') {
     ++i;
     std::uint32_t bit = 0;
-    if (!number(bit)) return fail(number_error == address_error::number_too_large ? address_error::bit_out_of_range : number_error);
+    if (!number(bit))
+      return fail(number_error == address_error::number_too_large ? address_error::bit_out_of_range : number_error);
     if (i < text.size() && text[i] == '.') return fail(address_error::hierarchical);
     if (a.width != io_width::bit) return fail(address_error::bit_on_wide_address);
     if (bit > 7) return fail(address_error::bit_out_of_range);
@@ -205,16 +206,31 @@ namespace detail {
 template <address_error E>
 consteval void check_address() noexcept {
   static_assert(E != address_error::empty, "iecoop: empty direct address; write e.g. \"%IX0.0\", \"%QW2\" or \"%MD4\"");
-  static_assert(E != address_error::missing_percent, "iecoop: a direct address starts with %; write e.g. \"%IX0.5\", not \"IX0.5\"");
-  static_assert(E != address_error::bad_area, "iecoop: the area of a direct address is I (input), Q (output) or M (memory); write e.g. \"%IX0.0\", \"%QB1\" or \"%MW2\"");
-  static_assert(E != address_error::incomplete, "iecoop: incomplete addresses (%I*, %Q*) are mapped by a device configuration, which iecoop does not have; write the full address, e.g. \"%IX0.0\"");
-  static_assert(E != address_error::bad_size, "iecoop: unknown size letter in the direct address; the sizes are X (bit), B (byte), W (word), D (double word) and L (long word)");
-  static_assert(E != address_error::expected_number, "iecoop: a number is missing in the direct address; write e.g. \"%IW2\" or \"%IX0.5\"");
-  static_assert(E != address_error::number_too_large, "iecoop: the number of the direct address is too large (at most 268435455); use a smaller address");
-  static_assert(E != address_error::bit_on_wide_address, "iecoop: only bit addresses (%IX, or %I without size) take a bit number; write \"%IX2.4\" for bit 4 of byte 2, or read the byte or word through the process image");
-  static_assert(E != address_error::bit_out_of_range, "iecoop: the bit number of a direct address is 0..7 (a byte has 8 bits); %IX0.8 is written %IX1.0");
-  static_assert(E != address_error::hierarchical, "iecoop: hierarchical addresses (%IW2.5.7.1) depend on a fieldbus configuration iecoop does not have; write a flat address such as \"%IW2\"");
-  static_assert(E != address_error::trailing_characters, "iecoop: unexpected characters after the direct address; write e.g. \"%IX0.5\" or \"%QW2\"");
+  static_assert(E != address_error::missing_percent,
+                "iecoop: a direct address starts with %; write e.g. \"%IX0.5\", not \"IX0.5\"");
+  static_assert(E != address_error::bad_area,
+                "iecoop: the area of a direct address is I (input), Q (output) or M (memory); write e.g. \"%IX0.0\", "
+                "\"%QB1\" or \"%MW2\"");
+  static_assert(E != address_error::incomplete,
+                "iecoop: incomplete addresses (%I*, %Q*) are mapped by a device configuration, which iecoop does not "
+                "have; write the full address, e.g. \"%IX0.0\"");
+  static_assert(E != address_error::bad_size,
+                "iecoop: unknown size letter in the direct address; the sizes are X (bit), B (byte), W (word), D "
+                "(double word) and L (long word)");
+  static_assert(E != address_error::expected_number,
+                "iecoop: a number is missing in the direct address; write e.g. \"%IW2\" or \"%IX0.5\"");
+  static_assert(E != address_error::number_too_large,
+                "iecoop: the number of the direct address is too large (at most 268435455); use a smaller address");
+  static_assert(E != address_error::bit_on_wide_address,
+                "iecoop: only bit addresses (%IX, or %I without size) take a bit number; write \"%IX2.4\" for bit 4 of "
+                "byte 2, or read the byte or word through the process image");
+  static_assert(E != address_error::bit_out_of_range,
+                "iecoop: the bit number of a direct address is 0..7 (a byte has 8 bits); %IX0.8 is written %IX1.0");
+  static_assert(E != address_error::hierarchical,
+                "iecoop: hierarchical addresses (%IW2.5.7.1) depend on a fieldbus configuration iecoop does not have; "
+                "write a flat address such as \"%IW2\"");
+  static_assert(E != address_error::trailing_characters,
+                "iecoop: unexpected characters after the direct address; write e.g. \"%IX0.5\" or \"%QW2\"");
 }
 
 // The address is parsed from a copy of its characters made inside the constant evaluation

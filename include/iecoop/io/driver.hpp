@@ -98,7 +98,8 @@ class callback_io {
  */
 template <class Image = default_process_image>
 class simulated_io {
-  static_assert(detail::is_process_image<Image>::value, "iecoop: simulated_io<Image> simulates the field of a process_image<...>");
+  static_assert(detail::is_process_image<Image>::value,
+                "iecoop: simulated_io<Image> simulates the field of a process_image<...>");
 
  public:
   using image_type = Image;
@@ -111,9 +112,10 @@ class simulated_io {
     using T = detail::unwrapped_t<const V&>;
     const T value = detail::value_of(given);
     constexpr io_address address = address_of<A>;
-    static_assert(!detail::address_parses<A> || address.area == io_area::input,
-                  "iecoop: simulated_io::set<> sets an input (%I...) of the field; outputs (%Q) are written by the program "
-                  "and memory (%M) is not I/O: read them with get<T, \"%Q...\">(), or use Image::write<T, A>()");
+    static_assert(
+        !detail::address_parses<A> || address.area == io_area::input,
+        "iecoop: simulated_io::set<> sets an input (%I...) of the field; outputs (%Q) are written by the program "
+        "and memory (%M) is not I/O: read them with get<T, \"%Q...\">(), or use Image::write<T, A>()");
     static_assert(sizeof(detail::access_check_t<T, A, Image>) > 0);  // its static_asserts report misuse
     if constexpr (detail::access_valid<T, A, Image> && address.area == io_area::input) {
       detail::image_store<T, address, Image::mode>(inputs_.data(), value);

@@ -97,7 +97,9 @@ struct io_repr<basic_time<Rep, Period>> {
   static constexpr bool stored = true;
   using raw = typename unsigned_of<sizeof(Rep)>::type;
   static constexpr raw to_raw(basic_time<Rep, Period> v) noexcept { return static_cast<raw>(v.count()); }
-  static constexpr basic_time<Rep, Period> from_raw(raw r) noexcept { return basic_time<Rep, Period>::from_ticks(static_cast<Rep>(r)); }
+  static constexpr basic_time<Rep, Period> from_raw(raw r) noexcept {
+    return basic_time<Rep, Period>::from_ticks(static_cast<Rep>(r));
+  }
 };
 
 /// The type that can be stored at an address: a BOOL, or an elementary type of the
@@ -140,36 +142,43 @@ using default_type_t = typename default_type<W>::type;
 /// The type of a value fits the width W of its address (Fits), one static_assert per width.
 template <io_width W, bool Fits>
 struct width_holds {
-  static_assert(Fits || W != io_width::bit,
-                "iecoop: a bit address (%IX, %QX, %MX) holds a BOOL; declare the variable BOOL, or give it the address of "
-                "its size: %IB for BYTE/SINT/USINT, %IW for WORD/INT/UINT, %ID for DWORD/DINT/UDINT/REAL/TIME, %IL for 64 bits");
-  static_assert(Fits || W != io_width::byte,
-                "iecoop: a byte address (%IB, %QB, %MB) holds a BYTE, SINT, USINT or BOOL; give the variable the address of "
-                "its size: %IW for WORD/INT/UINT, %ID for DWORD/DINT/UDINT/REAL/TIME, %IL for LWORD/LINT/ULINT/LREAL/LTIME");
-  static_assert(Fits || W != io_width::word,
-                "iecoop: a word address (%IW, %QW, %MW) holds a WORD, INT or UINT; give the variable the address of its "
-                "size: %IX for BOOL, %IB for BYTE/SINT/USINT, %ID for DWORD/DINT/UDINT/REAL/TIME, %IL for 64 bits");
-  static_assert(Fits || W != io_width::dword,
-                "iecoop: a double-word address (%ID, %QD, %MD) holds a DWORD, DINT, UDINT, REAL or TIME; give the variable "
-                "the address of its size: %IX for BOOL, %IB for 8 bits, %IW for 16 bits, %IL for LWORD/LINT/ULINT/LREAL/LTIME");
-  static_assert(Fits || W != io_width::lword,
-                "iecoop: a long-word address (%IL, %QL, %ML) holds an LWORD, LINT, ULINT, LREAL or LTIME; give the variable "
-                "the address of its size: %IX for BOOL, %IB for 8 bits, %IW for 16 bits, %ID for 32 bits");
+  static_assert(
+      Fits || W != io_width::bit,
+      "iecoop: a bit address (%IX, %QX, %MX) holds a BOOL; declare the variable BOOL, or give it the address of "
+      "its size: %IB for BYTE/SINT/USINT, %IW for WORD/INT/UINT, %ID for DWORD/DINT/UDINT/REAL/TIME, %IL for 64 bits");
+  static_assert(
+      Fits || W != io_width::byte,
+      "iecoop: a byte address (%IB, %QB, %MB) holds a BYTE, SINT, USINT or BOOL; give the variable the address of "
+      "its size: %IW for WORD/INT/UINT, %ID for DWORD/DINT/UDINT/REAL/TIME, %IL for LWORD/LINT/ULINT/LREAL/LTIME");
+  static_assert(
+      Fits || W != io_width::word,
+      "iecoop: a word address (%IW, %QW, %MW) holds a WORD, INT or UINT; give the variable the address of its "
+      "size: %IX for BOOL, %IB for BYTE/SINT/USINT, %ID for DWORD/DINT/UDINT/REAL/TIME, %IL for 64 bits");
+  static_assert(
+      Fits || W != io_width::dword,
+      "iecoop: a double-word address (%ID, %QD, %MD) holds a DWORD, DINT, UDINT, REAL or TIME; give the variable "
+      "the address of its size: %IX for BOOL, %IB for 8 bits, %IW for 16 bits, %IL for LWORD/LINT/ULINT/LREAL/LTIME");
+  static_assert(
+      Fits || W != io_width::lword,
+      "iecoop: a long-word address (%IL, %QL, %ML) holds an LWORD, LINT, ULINT, LREAL or LTIME; give the variable "
+      "the address of its size: %IX for BOOL, %IB for 8 bits, %IW for 16 bits, %ID for 32 bits");
 };
 
 /// T is an IEC elementary type that can be stored at an address.
 template <bool Elementary>
 struct elementary_holds {
-  static_assert(Elementary,
-                "iecoop: a value at a direct address has an elementary IEC type (BOOL, BYTE..LWORD, SINT..ULINT, REAL, "
-                "LREAL, TIME, LTIME); declare the located variable with one of them, e.g. located<INT, \"%IW2\">, or pass "
-                "an IEC value, e.g. INT(300)");
+  static_assert(
+      Elementary,
+      "iecoop: a value at a direct address has an elementary IEC type (BOOL, BYTE..LWORD, SINT..ULINT, REAL, "
+      "LREAL, TIME, LTIME); declare the located variable with one of them, e.g. located<INT, \"%IW2\">, or pass "
+      "an IEC value, e.g. INT(300)");
 };
 
 /// The checks of the type of a value at address A.
 template <class T, io_address A>
-struct address_holds : elementary_holds<std::is_same_v<T, BOOL> || io_repr<T>::stored>,
-                       width_holds<A.width, !(std::is_same_v<T, BOOL> || io_repr<T>::stored) || fits_width<T>(A.width)> {
+struct address_holds
+    : elementary_holds<std::is_same_v<T, BOOL> || io_repr<T>::stored>,
+      width_holds<A.width, !(std::is_same_v<T, BOOL> || io_repr<T>::stored) || fits_width<T>(A.width)> {
   static constexpr bool value = fits_width<T>(A.width);
 };
 
@@ -194,14 +203,16 @@ template <class T, io_address A, class Image>
   requires is_process_image<Image>::value
 struct access_check<T, A, Image, true>
     : address_holds<T, A>, address_within_area<A.first_byte(Image::mode), A.byte_count(), Image::size_of(A.area)> {
-  static constexpr bool value = address_holds<T, A>::value &&
-                                address_within_area<A.first_byte(Image::mode), A.byte_count(), Image::size_of(A.area)>::value;
+  static constexpr bool value =
+      address_holds<T, A>::value &&
+      address_within_area<A.first_byte(Image::mode), A.byte_count(), Image::size_of(A.area)>::value;
 };
 template <class T, io_address A, class Image>
   requires(!is_process_image<Image>::value)
 struct access_check<T, A, Image, true> {
-  static_assert(dependent_false<T, Image>,
-                "iecoop: the image of a located variable is a process_image<...>; e.g. located<BOOL, \"%IX0.0\", my_image>");
+  static_assert(
+      dependent_false<T, Image>,
+      "iecoop: the image of a located variable is a process_image<...>; e.g. located<BOOL, \"%IX0.0\", my_image>");
   static constexpr bool value = false;
 };
 
@@ -278,7 +289,8 @@ inline void image_store(std::byte* area, const T& value) noexcept {
       constexpr std::byte mask{static_cast<unsigned char>(1u << A.bit)};
       area[first] = static_cast<bool>(value) ? (area[first] | mask) : (area[first] & ~mask);
     } else {
-      area[first] = std::byte{static_cast<bool>(value) ? std::uint8_t{1} : std::uint8_t{0}};  // CODESYS stores TRUE as 1
+      area[first] =
+          std::byte{static_cast<bool>(value) ? std::uint8_t{1} : std::uint8_t{0}};  // CODESYS stores TRUE as 1
     }
   } else {
     const auto r = little_endian(io_repr<T>::to_raw(value));
@@ -444,10 +456,11 @@ class located : public detail::condition_conversion<located<T, Address, Image>, 
   /// Writes the value to the process image (%Q and %M only). A non-template operand, so that
   /// constants convert as in any assignment (`iCount = 5;`).
   located& operator=(const T& value) noexcept {
-    static_assert(address.area != io_area::input,
-                  "iecoop: a %I... located variable is an input, written by the I/O driver at the start of each task "
-                  "cycle; the program only reads it. Give the variable a %Q (output) or %M (memory) address, or set the "
-                  "field value through simulated_io::set<\"%I...\">() or Image::write<T, \"%I...\">()");
+    static_assert(
+        address.area != io_area::input,
+        "iecoop: a %I... located variable is an input, written by the I/O driver at the start of each task "
+        "cycle; the program only reads it. Give the variable a %Q (output) or %M (memory) address, or set the "
+        "field value through simulated_io::set<\"%I...\">() or Image::write<T, \"%I...\">()");
     if constexpr (checked && address.area != io_area::input) {
       detail::image_store<T, address, Image::mode>(Image::area_data(address.area), value);
     }
@@ -590,9 +603,10 @@ constexpr bool all_located(pins<Members...>) noexcept {
 /// members (the template arguments) with the message.
 template <auto First, auto Second, bool Disjoint = false>
 struct located_overlap {
-  static_assert(Disjoint,
-                "iecoop: two located variables overlap (their names are in the template arguments above); give each its "
-                "own address, or read the other width through the process image (Image::read<...>)");
+  static_assert(
+      Disjoint,
+      "iecoop: two located variables overlap (their names are in the template arguments above); give each its "
+      "own address, or read the other width through the process image (Image::read<...>)");
   static constexpr bool value = false;
 };
 
@@ -605,8 +619,9 @@ namespace detail {
 template <class... Objects>
 constexpr bool located_disjoint_impl() noexcept {
   using list = all_located_t<Objects...>;
-  static_assert(all_located(list{}),
-                "iecoop: LOCATED lists located<> members only, e.g. using LOCATED = pins<&GVL_IO::bStart, &GVL_IO::bMotor>;");
+  static_assert(
+      all_located(list{}),
+      "iecoop: LOCATED lists located<> members only, e.g. using LOCATED = pins<&GVL_IO::bStart, &GVL_IO::bMotor>;");
   if constexpr (all_located(list{})) {
     return first_overlap(list{}).first == list::size;
   } else {
@@ -635,8 +650,9 @@ inline constexpr bool located_disjoint = detail::located_disjoint_impl<Objects..
 template <class... Objects>
 constexpr void check_located() noexcept {
   using list = detail::all_located_t<Objects...>;
-  static_assert(detail::all_located(list{}),
-                "iecoop: LOCATED lists located<> members only, e.g. using LOCATED = pins<&GVL_IO::bStart, &GVL_IO::bMotor>;");
+  static_assert(
+      detail::all_located(list{}),
+      "iecoop: LOCATED lists located<> members only, e.g. using LOCATED = pins<&GVL_IO::bStart, &GVL_IO::bMotor>;");
   if constexpr (detail::all_located(list{})) {
     constexpr detail::overlap_pair hit = detail::first_overlap(list{});
     if constexpr (hit.first < list::size) {

@@ -104,9 +104,9 @@ template <class Section, class B>
 struct section_pins {
   using base = typename base_of<B>::type;
   using own = typename declared_pins<Section, B>::type;
-  using type = typename concat_pins<typename section_pins<Section, base>::type,
-                                    std::conditional_t<std::is_same_v<own, typename declared_pins<Section, base>::type>,
-                                                       pins<>, own>>::type;
+  using type = typename concat_pins<
+      typename section_pins<Section, base>::type,
+      std::conditional_t<std::is_same_v<own, typename declared_pins<Section, base>::type>, pins<>, own>>::type;
 };
 template <class Section>
 struct section_pins<Section, void> {

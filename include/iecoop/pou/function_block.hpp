@@ -62,7 +62,8 @@ struct block_access {
   template <class B>
   static constexpr bool declares_own_body() noexcept {
     if constexpr (requires { &B::body; }) {
-      return std::is_same_v<decltype(&B::body), void (B::*)()> || std::is_same_v<decltype(&B::body), void (B::*)() noexcept>;
+      return std::is_same_v<decltype(&B::body), void (B::*)()> ||
+             std::is_same_v<decltype(&B::body), void (B::*)() noexcept>;
     } else {
       return false;
     }
@@ -85,8 +86,9 @@ inline constexpr bool names_unique = unique_names<Pins>();
 template <class B>
 constexpr void check_interface() {
   using all = typename concat_pins<typename concat_pins<inputs_of<B>, outputs_of<B>>::type, in_outs_of<B>>::type;
-  static_assert(names_unique<all>,
-                "iecoop: two pins of the block have the same name; a derived block may not redeclare a variable of its base");
+  static_assert(
+      names_unique<all>,
+      "iecoop: two pins of the block have the same name; a derived block may not redeclare a variable of its base");
 }
 
 /// Applies `Name := value` to a block: assigns an input, or binds an in-out.
@@ -133,7 +135,8 @@ template <class B, class A>
 constexpr bool known_name() noexcept {
   using arg = std::remove_cvref_t<A>;
   if constexpr (NamedInput<A>) {
-    return inputs_of<B>::index_of(arg::name) < inputs_of<B>::size || in_outs_of<B>::index_of(arg::name) < in_outs_of<B>::size;
+    return inputs_of<B>::index_of(arg::name) < inputs_of<B>::size ||
+           in_outs_of<B>::index_of(arg::name) < in_outs_of<B>::size;
   } else if constexpr (NamedOutput<A>) {
     return outputs_of<B>::index_of(arg::name) < outputs_of<B>::size;
   } else {
@@ -232,7 +235,8 @@ constexpr void report_invalid_call() {
     static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice; name each variable once");
   } else {
     using mistyped = std::remove_cvref_t<typename first_mistyped_argument<B, A...>::type>;
-    using target = std::remove_cvref_t<decltype(std::declval<B&>().*pin<inputs_of<B>, inputs_of<B>::index_of(mistyped::name)>)>;
+    using target =
+        std::remove_cvref_t<decltype(std::declval<B&>().*pin<inputs_of<B>, inputs_of<B>::index_of(mistyped::name)>)>;
     using from = nominal_t<passed_t<decltype(std::declval<mistyped>().value)>>;
     using to = unwrapped_t<target&>;
     if constexpr (!iec_name<from>::value.empty() && !iec_name<to>::value.empty()) {
@@ -253,7 +257,8 @@ void call_valid_block(B& block, A&&... arguments) {
       ...);
   using in_outs = in_outs_of<B>;
   if (!all_bound<B, in_outs>(block, std::make_index_sequence<in_outs::size>{})) {
-    fault(fault_kind::unbound_in_out, "a block was called with a VAR_IN_OUT not bound to a variable; its body did not run");
+    fault(fault_kind::unbound_in_out,
+          "a block was called with a VAR_IN_OUT not bound to a variable; its body did not run");
   } else {
     block_access::body(block);
   }

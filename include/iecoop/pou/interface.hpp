@@ -239,7 +239,8 @@ struct is_iec_value<itf<I>> : std::true_type {};
 
 template <class I>
 class itf {
-  static_assert(detail::is_interface<I>, "iecoop: itf<I> refers to an interface (a class derived from interface_base<I>)");
+  static_assert(detail::is_interface<I>,
+                "iecoop: itf<I> refers to an interface (a class derived from interface_base<I>)");
 
  public:
   using interface_type = I;

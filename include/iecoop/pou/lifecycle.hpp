@@ -59,10 +59,11 @@ void run_fb_init(B& block, P&&... params_then_initial_values) {
   constexpr std::size_t params = sizeof...(P) - named;
   auto arguments = std::forward_as_tuple(std::forward<P>(params_then_initial_values)...);
   [&]<std::size_t... I, std::size_t... J>(std::index_sequence<I...>, std::index_sequence<J...>) {
-    static_assert(requires { block_access::fb_init(block, BOOL{}, BOOL{}, std::get<I>(std::move(arguments))...); },
-                  "iecoop: the block has no FB_Init(BOOL bInitRetains, BOOL bInCopyCode, <these parameters>)");
-    block_access::fb_init(block, BOOL(detail::current_lifecycle.init_retains), BOOL(detail::current_lifecycle.in_copy_code),
-                          std::get<I>(std::move(arguments))...);
+    static_assert(
+        requires { block_access::fb_init(block, BOOL{}, BOOL{}, std::get<I>(std::move(arguments))...); },
+        "iecoop: the block has no FB_Init(BOOL bInitRetains, BOOL bInCopyCode, <these parameters>)");
+    block_access::fb_init(block, BOOL(detail::current_lifecycle.init_retains),
+                          BOOL(detail::current_lifecycle.in_copy_code), std::get<I>(std::move(arguments))...);
     block.with(std::get<params + J>(std::move(arguments))...);
   }(std::make_index_sequence<params>{}, std::make_index_sequence<named>{});
 }
@@ -90,9 +91,9 @@ T& first_start(void* storage, A&&... args) noexcept {
 
 /// The resets of a running application (CODESYS: Online → Reset warm/cold/origin).
 enum class reset_kind : std::uint8_t {
-  warm,   ///< FB_Exit(FALSE), then FB_Init(bInitRetains := FALSE, bInCopyCode := FALSE)
-  cold,   ///< FB_Exit(FALSE), then FB_Init(TRUE, FALSE)
-  origin, ///< as cold (and, with the scheduler, PERSISTENT data is dropped too)
+  warm,    ///< FB_Exit(FALSE), then FB_Init(bInitRetains := FALSE, bInCopyCode := FALSE)
+  cold,    ///< FB_Exit(FALSE), then FB_Init(TRUE, FALSE)
+  origin,  ///< as cold (and, with the scheduler, PERSISTENT data is dropped too)
 };
 
 /**

@@ -207,7 +207,8 @@ class args : public Vars {
       if constexpr (detail::is_output<field>::value) {
         get_field<index>(static_cast<Vars&>(*this)).bind_result(*argument.target);
       } else {
-        static_assert(detail::dependent_false<A>, "iecoop: only a VAR_OUTPUT (declared as output<T>) can be read with =>");
+        static_assert(detail::dependent_false<A>,
+                      "iecoop: only a VAR_OUTPUT (declared as output<T>) can be read with =>");
       }
     } else {
       static_assert(Position < field_count<Vars>, "iecoop: more arguments than the method or function has variables");

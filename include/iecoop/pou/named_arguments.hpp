@@ -89,8 +89,8 @@ constexpr std::string_view name_of_argument() noexcept {
 // Positional arguments come first, named ones after them.
 template <class... A>
 constexpr bool positional_first() noexcept {
-  constexpr bool named[] = {false, (is_named_input<std::remove_cvref_t<A>>::value ||
-                                    is_named_output<std::remove_cvref_t<A>>::value)...};
+  constexpr bool named[] = {
+      false, (is_named_input<std::remove_cvref_t<A>>::value || is_named_output<std::remove_cvref_t<A>>::value)...};
   for (std::size_t i = 2; i < sizeof...(A) + 1; ++i) {
     if (named[i - 1] && !named[i]) return false;
   }
@@ -134,8 +134,9 @@ namespace detail {
 /// A C++ integer arriving at an IEC integer or duration through a call's argument list: the
 /// value is no longer a constant there, so its range is checked at run time instead.
 template <class Target, class V>
-concept checked_integer_argument = cpp_integer<std::remove_cvref_t<V>> && (AnyInteger<Target> || AnyDuration<Target>) &&
-                                   !range_within<std::remove_cvref_t<V>, typename Target::rep>;
+concept checked_integer_argument =
+    cpp_integer<std::remove_cvref_t<V>> &&
+    (AnyInteger<Target> || AnyDuration<Target>)&&!range_within<std::remove_cvref_t<V>, typename Target::rep>;
 
 }  // namespace detail
 

@@ -43,7 +43,7 @@
 #include <iecoop/detail/push_macros.hpp>
 
 #if defined(_MSC_VER) && !defined(__clang__)
-#  error "iecoop: property<> needs [[no_unique_address]] as GCC and Clang implement it (MSVC ignores the attribute)"
+#error "iecoop: property<> needs [[no_unique_address]] as GCC and Clang implement it (MSVC ignores the attribute)"
 #endif
 
 namespace iecoop {
@@ -103,8 +103,9 @@ template <auto Shadow>
 struct is_monitoring_option<monitoring::variable<Shadow>> : std::true_type {};
 /// The options property<> knows.
 template <class Option>
-inline constexpr bool is_property_option = std::is_same_v<Option, owner_only_get> || std::is_same_v<Option, owner_only_set> ||
-                                           is_monitoring_option<Option>::value;
+inline constexpr bool is_property_option =
+    std::is_same_v<Option, owner_only_get> || std::is_same_v<Option, owner_only_set> ||
+    is_monitoring_option<Option>::value;
 
 template <class... Options>
 struct monitoring_of {

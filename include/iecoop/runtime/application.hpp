@@ -125,7 +125,9 @@ class application {
     retain_size_ = size;
     if (size > 0 && storage_.object != nullptr &&
         !storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size))) {
-      fault(fault_kind::invalid_value, "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or with older data)");
+      fault(fault_kind::invalid_value,
+            "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or "
+            "with older data)");
     }
     destroy();
     scheduler_.halt();
@@ -203,7 +205,8 @@ class application {
   template <class T>
   [[nodiscard]] T& get() {
     static_assert(config::template owns<T>,
-                  "iecoop: the application owns no instance of this type; name the program in a task, or the list in globals<...>");
+                  "iecoop: the application owns no instance of this type; name the program in a task, or the list in "
+                  "globals<...>");
     if (constructed_) return store_.template get<T>();
     if constexpr (requires { T::instance(); }) {
       return T::instance();  // a program or global_variables<>: reports the fault, yields its scratch instance
@@ -233,7 +236,9 @@ class application {
   void use_storage(S& storage) noexcept {
     storage_.object = &storage;
     storage_.save = [](void* s, std::span<const std::byte> data) { return static_cast<S*>(s)->save(data); };
-    storage_.load = [](void* s, std::span<std::byte> buffer) { return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer)); };
+    storage_.load = [](void* s, std::span<std::byte> buffer) {
+      return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer));
+    };
   }
 
   /// Saves the RETAIN and PERSISTENT values to the attached storage now (as TwinCAT's
@@ -250,7 +255,9 @@ class application {
   void set_freewheeling_load(unsigned percent) noexcept { scheduler_.set_freewheeling_load(percent); }
 
   /// The outputs as last written to the driver (what the field sees).
-  [[nodiscard]] std::span<const std::byte, image::output_bytes> published_outputs() const noexcept { return scheduler_.cycles().published(); }
+  [[nodiscard]] std::span<const std::byte, image::output_bytes> published_outputs() const noexcept {
+    return scheduler_.cycles().published();
+  }
 
  private:
   struct storage_binding {
@@ -282,7 +289,8 @@ class application {
       if (size > retain_memory_.size()) size = 0;
     }
     const retain_kinds keep =
-        size == 0 ? retain_kinds::none : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
+        size == 0 ? retain_kinds::none
+                  : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
     construct(!keep.contains(retain_kind::retain));
     if (size > 0) restore(keep, size);
     scheduler_.restart();

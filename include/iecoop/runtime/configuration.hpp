@@ -66,10 +66,12 @@ constexpr void check_entry() {
   using e = entry<E>;
   if constexpr (!(e::is_task || e::is_globals || e::is_image || e::is_capacity)) {
     static_assert(!program_type<E>,
-                  "iecoop: a PROGRAM is assigned to no task; name it in a task (task<PRG>{\"Main\", cyclic{\"T#10ms\"_iec}, 1}) — "
+                  "iecoop: a PROGRAM is assigned to no task; name it in a task (task<PRG>{\"Main\", "
+                  "cyclic{\"T#10ms\"_iec}, 1}) — "
                   "a program that only other POUs call is declared as an ordinary variable");
-    static_assert(program_type<E>,
-                  "iecoop: an application is made of task<...>{...}, globals<...>{}, use_image<...>{} and retain_capacity<N>{}");
+    static_assert(
+        program_type<E>,
+        "iecoop: an application is made of task<...>{...}, globals<...>{}, use_image<...>{} and retain_capacity<N>{}");
   }
 }
 
@@ -127,14 +129,14 @@ struct located_check<Image, type_list<Objects...>> {
     check_located<Objects...>();
     using list = all_located_t<Objects...>;
     if constexpr (all_located(list{})) {
-      static_assert(in_image(list{}),
-                    "iecoop: a located variable of the application's programs or global variable lists lies in another "
-                    "process image than the application's; give it the application's image: located<T, \"%...\", Image>, "
-                    "with Image as in use_image<Image>{}");
+      static_assert(
+          in_image(list{}),
+          "iecoop: a located variable of the application's programs or global variable lists lies in another "
+          "process image than the application's; give it the application's image: located<T, \"%...\", Image>, "
+          "with Image as in use_image<Image>{}");
     }
   }
 };
-
 
 /// An application's configuration, `Entries...` as given to application{...}.
 template <class... Entries>
@@ -158,9 +160,8 @@ struct configuration {
 
   /// Whether the application owns an instance of T.
   template <class T>
-  static constexpr bool owns = [] {
-    return []<class... Ts>(type_list<Ts...>) { return occurs_in<T, Ts...>; }(owned_list{});
-  }();
+  static constexpr bool owns =
+      [] { return []<class... Ts>(type_list<Ts...>) { return occurs_in<T, Ts...>; }(owned_list{}); }();
 
   /// The tasks' settings, in configuration order.
   static std::array<task_settings, task_count> task_settings_of(const Entries&... entries) noexcept {

@@ -30,9 +30,9 @@
 #include <iecoop/types/time.hpp>
 
 #if defined(__linux__)
-#  include <sched.h>
-#  include <sys/mman.h>
-#  include <time.h>
+#include <sched.h>
+#include <sys/mman.h>
+#include <time.h>
 #endif
 
 #include <iecoop/detail/push_macros.hpp>
@@ -41,11 +41,11 @@ namespace iecoop {
 
 /// How a realtime_runner runs.
 struct realtime_options {
-  bool fifo = false;           ///< ask for SCHED_FIFO at fifo_priority while run() runs
-  int fifo_priority = 50;      ///< 1..99 (Linux)
-  bool lock_memory = false;    ///< with fifo granted: mlockall, so that no page fault delays a cycle
-  LTIME event_poll{1000000};   ///< how often event conditions are sampled when nothing else is due (1 ms)
-  LTIME max_sleep{50000000};   ///< the longest sleep, so that a stop request is seen within it (50 ms)
+  bool fifo = false;          ///< ask for SCHED_FIFO at fifo_priority while run() runs
+  int fifo_priority = 50;     ///< 1..99 (Linux)
+  bool lock_memory = false;   ///< with fifo granted: mlockall, so that no page fault delays a cycle
+  LTIME event_poll{1000000};  ///< how often event conditions are sampled when nothing else is due (1 ms)
+  LTIME max_sleep{50000000};  ///< the longest sleep, so that a stop request is seen within it (50 ms)
 };
 
 /// Why realtime_runner::run returned.
@@ -155,7 +155,8 @@ class realtime_runner {
       now = clock_now();
       LTIME wake = std::min(tasks.next_release(), std::min(deadline, detail::add_saturated(now, options_.max_sleep)));
       if (tasks.has_event_tasks()) wake = std::min(wake, detail::add_saturated(now, options_.event_poll));
-      if (wake > now) sleep_until(origin_ + std::chrono::nanoseconds(static_cast<std::int64_t>((wake - base_).count())));
+      if (wake > now)
+        sleep_until(origin_ + std::chrono::nanoseconds(static_cast<std::int64_t>((wake - base_).count())));
     }
   }
 
@@ -176,7 +177,8 @@ class realtime_runner {
 
   // The application's time now: base_ plus the steady time since origin_.
   [[nodiscard]] LTIME clock_now() const noexcept {
-    const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - origin_);
+    const auto elapsed =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - origin_);
     return base_ + LTIME::from_ticks(static_cast<std::uint64_t>(elapsed.count()));
   }
 

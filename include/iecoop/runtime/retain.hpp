@@ -100,7 +100,8 @@ class retain_kinds {
 inline constexpr retain_kinds retain_kinds::none{};
 inline constexpr retain_kinds retain_kinds::retain{retain_kind::retain};
 inline constexpr retain_kinds retain_kinds::persistent{retain_kind::persistent};
-inline constexpr retain_kinds retain_kinds::both = retain_kinds{retain_kind::retain} | retain_kinds{retain_kind::persistent};
+inline constexpr retain_kinds retain_kinds::both =
+    retain_kinds{retain_kind::retain} | retain_kinds{retain_kind::persistent};
 
 constexpr retain_kinds operator|(retain_kind a, retain_kind b) noexcept { return retain_kinds(a) | retain_kinds(b); }
 
@@ -190,8 +191,9 @@ class retained_variable : public assignable_variable<Derived, T> {
                 "as bytes; use IEC elementary types, STRING<n>, std::array and STRUCTs of them");
   static_assert(!std::is_array_v<T>,
                 "iecoop: a RETAIN or PERSISTENT array is written retain<std::array<T, N>>, not retain<T[N]>");
-  static_assert(!std::is_const_v<T> && !std::is_volatile_v<T>,
-                "iecoop: a RETAIN or PERSISTENT variable is written when its value is restored; drop const or volatile");
+  static_assert(
+      !std::is_const_v<T> && !std::is_volatile_v<T>,
+      "iecoop: a RETAIN or PERSISTENT variable is written when its value is restored; drop const or volatile");
   using base = assignable_variable<Derived, T>;
 
  public:
@@ -277,7 +279,9 @@ inline constexpr std::size_t retain_section_header_size = 16;
 inline constexpr std::uint16_t retain_image_version = 1;
 inline constexpr std::array<unsigned char, 4> retain_image_magic{'I', 'E', 'C', 'R'};
 
-inline std::uintptr_t retained_address(const void* pointer) noexcept { return reinterpret_cast<std::uintptr_t>(pointer); }
+inline std::uintptr_t retained_address(const void* pointer) noexcept {
+  return reinterpret_cast<std::uintptr_t>(pointer);
+}
 
 /// Calls f(node, offset) for each remanent variable of `kind` that lies in `object`, in
 /// increasing order of its offset in the object. O(variables) when the variables were
@@ -396,7 +400,8 @@ inline std::size_t retained_image_size(std::span<const retained_object> objects,
  * Returns the bytes written; if `out` is smaller than retained_image_size(objects, kinds),
  * reports fault_kind::invalid_value, writes nothing and returns 0.
  */
-inline std::size_t save_retained(std::span<const retained_object> objects, retain_kinds kinds, std::span<std::byte> out) {
+inline std::size_t save_retained(std::span<const retained_object> objects, retain_kinds kinds,
+                                 std::span<std::byte> out) {
   const std::size_t needed = retained_image_size(objects, kinds);
   if (out.size() < needed) {
     fault(fault_kind::invalid_value,

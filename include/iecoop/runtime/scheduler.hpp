@@ -129,9 +129,10 @@ constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept { return b > LTIME::max
 template <std::size_t N, class Cycles>
 class scheduler {
   static_assert(N > 0, "iecoop: a scheduler needs at least one task; add task<PRG>{...}");
-  static_assert(TaskCycles<Cycles>,
-                "iecoop: a scheduler's Cycles type does a task cycle's work; give it begin_cycle(std::size_t task, LTIME now) "
-                "and end_cycle(std::size_t task, LTIME now)");
+  static_assert(
+      TaskCycles<Cycles>,
+      "iecoop: a scheduler's Cycles type does a task cycle's work; give it begin_cycle(std::size_t task, LTIME now) "
+      "and end_cycle(std::size_t task, LTIME now)");
 
  public:
   /// The value of pick() when no task is ready.
@@ -151,7 +152,8 @@ class scheduler {
         s.priority = 31;
       }
       if (s.kind == task_kind::cyclic && s.interval == LTIME{}) {
-        fault(fault_kind::invalid_value, "a cyclic task needs an interval greater than zero; the task is never released");
+        fault(fault_kind::invalid_value,
+              "a cyclic task needs an interval greater than zero; the task is never released");
       }
       tasks_[i].settings_ = s;
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
@@ -250,11 +252,12 @@ class scheduler {
     if (state_ == scheduler_state::running) release_due_now();
   }
 
-
   /// The task that gets the processor: the highest priority among those released or under
   /// way; among equals, the one under way before those released, then the earlier release,
   /// then the first in the configuration. no_task if none (or not running). O(1).
-  [[nodiscard]] std::size_t pick() const noexcept { return state_ == scheduler_state::running ? ready_.pick() : no_task; }
+  [[nodiscard]] std::size_t pick() const noexcept {
+    return state_ == scheduler_state::running ? ready_.pick() : no_task;
+  }
 
   /// Starts, at now(), a cycle of the released task `index` (as pick() chose it): the cycles'
   /// begin_cycle() does its work.
@@ -281,7 +284,8 @@ class scheduler {
     cycles_.end_cycle(index, now_);
     const LTIME cycle_time = now_ - t.start_time_;
     t.statistics_.record(t.start_time_ - t.release_time_, cycle_time);
-    if (t.settings_.kind == task_kind::freewheeling) t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
+    if (t.settings_.kind == task_kind::freewheeling)
+      t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
     if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
   }
 
@@ -387,7 +391,8 @@ class scheduler {
       state_ = scheduler_state::exception;
       faulted_task_ = &t;
       clear_schedules();
-      fault(fault_kind::watchdog, "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
+      fault(fault_kind::watchdog,
+            "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
     }
   }
 
@@ -397,7 +402,8 @@ class scheduler {
     const std::uint64_t max_load = freewheeling_load_ < 100 ? freewheeling_load_ : 100;
     // L = max_load / 2 / n percent; pause = cycle x (100 - L) / L = cycle x (200 n - max_load) / max_load.
     const std::uint64_t numerator = 200 * freewheeling_tasks - max_load;
-    const LTIME pause = LTIME::from_ticks(cycle_time.count() / max_load * numerator + cycle_time.count() % max_load * numerator / max_load);
+    const LTIME pause = LTIME::from_ticks(cycle_time.count() / max_load * numerator +
+                                          cycle_time.count() % max_load * numerator / max_load);
     const LTIME minimum = LTIME(TIME(1));
     return pause < minimum ? minimum : pause;
   }

@@ -56,7 +56,7 @@ enum class task_kind : std::uint8_t {
 
 /// Type "Cyclic" with its interval (ST: INTERVAL := T#10ms), a TIME or LTIME greater than zero.
 struct cyclic {
-  constexpr cyclic(TIME every) noexcept : interval(every) {}  // implicit: reads as the configuration
+  constexpr cyclic(TIME every) noexcept : interval(every) {}   // implicit: reads as the configuration
   constexpr cyclic(LTIME every) noexcept : interval(every) {}  // implicit on purpose
   LTIME interval;
 };
@@ -107,8 +107,8 @@ struct watchdog {
 struct task_settings {
   const char* name = "";
   task_kind kind = task_kind::cyclic;
-  LTIME interval{};              ///< cyclic tasks
-  event trigger{};               ///< event tasks
+  LTIME interval{};  ///< cyclic tasks
+  event trigger{};   ///< event tasks
   std::uint8_t priority = 31;
   bool has_watchdog = false;
   LTIME watchdog_time{};
@@ -134,22 +134,26 @@ concept program_type = std::is_base_of_v<program<P>, P>;
 template <class... Programs>
 class task {
   static_assert(sizeof...(Programs) > 0, "iecoop: a task calls at least one program; name them: task<PLC_PRG>{...}");
-  static_assert((detail::program_type<Programs> && ...),
-                "iecoop: a task calls PROGRAMs (types derived from iecoop::program<Self>); call function blocks from a program");
+  static_assert(
+      (detail::program_type<Programs> && ...),
+      "iecoop: a task calls PROGRAMs (types derived from iecoop::program<Self>); call function blocks from a program");
   static_assert(detail::all_distinct<Programs...>::value,
                 "iecoop: a task calls the same program twice; list each program once per task");
 
  public:
   /// A cyclic task: `task<PLC_PRG>{"MainTask", cyclic{"T#10ms"_iec}, 1}`; the priority is 0..31.
-  consteval task(const char* name, cyclic type, int priority) : task(name, task_kind::cyclic, type.interval, event{}, priority, nullptr) {}
+  consteval task(const char* name, cyclic type, int priority)
+      : task(name, task_kind::cyclic, type.interval, event{}, priority, nullptr) {}
   consteval task(const char* name, cyclic type, int priority, watchdog dog)
       : task(name, task_kind::cyclic, type.interval, event{}, priority, &dog) {}
   /// A freewheeling task: `task<LOG_PRG>{"Background", freewheeling{}, 31}`.
-  consteval task(const char* name, freewheeling, int priority) : task(name, task_kind::freewheeling, {}, event{}, priority, nullptr) {}
+  consteval task(const char* name, freewheeling, int priority)
+      : task(name, task_kind::freewheeling, {}, event{}, priority, nullptr) {}
   consteval task(const char* name, freewheeling, int priority, watchdog dog)
       : task(name, task_kind::freewheeling, {}, event{}, priority, &dog) {}
   /// An event task: `task<ALARM_PRG>{"Alarm", event{bAlarm}, 0}`.
-  consteval task(const char* name, event trigger, int priority) : task(name, task_kind::event, {}, trigger, priority, nullptr) {}
+  consteval task(const char* name, event trigger, int priority)
+      : task(name, task_kind::event, {}, trigger, priority, nullptr) {}
   consteval task(const char* name, event trigger, int priority, watchdog dog)
       : task(name, task_kind::event, {}, trigger, priority, &dog) {}
 
@@ -160,13 +164,22 @@ class task {
   // consteval constructor calls, or in a constructor it delegates to and then continues).
   consteval task(const char* name, task_kind kind, LTIME interval, event trigger, int priority, const watchdog* dog) {
     if (priority < 0 || priority > 31) {
+      // The compiler shows the call's line, which must hold the whole message.
+      // clang-format off
       detail::compile_error("iecoop: a task priority is 0 (highest) to 31 (lowest), as in CODESYS; use a value in 0..31");
+      // clang-format on
     }
     if (kind == task_kind::cyclic && interval == LTIME::zero()) {
+      // The compiler shows the call's line, which must hold the whole message.
+      // clang-format off
       detail::compile_error("iecoop: a cyclic task needs an interval greater than zero; write e.g. cyclic{\"T#10ms\"_iec}");
+      // clang-format on
     }
     if (dog != nullptr && dog->time == LTIME::zero()) {
+      // The compiler shows the call's line, which must hold the whole message.
+      // clang-format off
       detail::compile_error("iecoop: a watchdog time must be greater than zero; write e.g. watchdog{\"T#20ms\"_iec, 2}");
+      // clang-format on
     }
     settings_.name = name;
     settings_.kind = kind;

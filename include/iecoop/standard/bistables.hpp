@@ -21,8 +21,8 @@ namespace iecoop {
 /// SR: set-dominant bistable.
 class set_dominant_latch : public function_block<set_dominant_latch> {
  public:
-  BOOL S1;                       ///< VAR_INPUT: set (dominant)
-  BOOL R;                        ///< VAR_INPUT: reset
+  BOOL S1;                                 ///< VAR_INPUT: set (dominant)
+  BOOL R;                                  ///< VAR_INPUT: reset
   read_only<BOOL, set_dominant_latch> Q1;  ///< VAR_OUTPUT: the stored bit
 
   using VAR_INPUT = pins<&set_dominant_latch::S1, &set_dominant_latch::R>;
@@ -37,8 +37,8 @@ class set_dominant_latch : public function_block<set_dominant_latch> {
 /// RS: reset-dominant bistable.
 class reset_dominant_latch : public function_block<reset_dominant_latch> {
  public:
-  BOOL S;                          ///< VAR_INPUT: set
-  BOOL R1;                         ///< VAR_INPUT: reset (dominant)
+  BOOL S;                                    ///< VAR_INPUT: set
+  BOOL R1;                                   ///< VAR_INPUT: reset (dominant)
   read_only<BOOL, reset_dominant_latch> Q1;  ///< VAR_OUTPUT: the stored bit
 
   using VAR_INPUT = pins<&reset_dominant_latch::S, &reset_dominant_latch::R1>;

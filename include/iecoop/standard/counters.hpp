@@ -109,21 +109,20 @@ struct counter_limits {
 
 /// CTU: counts the rising edges of CU up to the limit; Q once CV >= PV; R (RESET) clears CV.
 template <class T, Dialect D>
-class up_counter : public function_block<up_counter<T, D>>,
-                   public detail::counter_reset_input<D::counter_pin_names> {
+class up_counter : public function_block<up_counter<T, D>>, public detail::counter_reset_input<D::counter_pin_names> {
   static_assert(detail::check_counter_type<T>());
   using reset_base = detail::counter_reset_input<D::counter_pin_names>;
 
  public:
-  BOOL CU;                      ///< VAR_INPUT: counts up on its rising edge
-  read_only<BOOL, up_counter> Q;    ///< VAR_OUTPUT: CV >= PV
+  BOOL CU;                        ///< VAR_INPUT: counts up on its rising edge
+  read_only<BOOL, up_counter> Q;  ///< VAR_OUTPUT: CV >= PV
 
  private:
   BOOL cu_memory_;
 
  public:
   T PV;                         ///< VAR_INPUT: the preset
-  read_only<T, up_counter> CV;      ///< VAR_OUTPUT: the count
+  read_only<T, up_counter> CV;  ///< VAR_OUTPUT: the count
 
   using VAR_INPUT = pins<&up_counter::CU, reset_base::pin, &up_counter::PV>;
   using VAR_OUTPUT = pins<&up_counter::Q, &up_counter::CV>;
@@ -152,15 +151,15 @@ class down_counter : public function_block<down_counter<T, D>>,
   using load_base = detail::counter_load_input<D::counter_pin_names>;
 
  public:
-  BOOL CD;                      ///< VAR_INPUT: counts down on its rising edge
+  BOOL CD;                          ///< VAR_INPUT: counts down on its rising edge
   read_only<BOOL, down_counter> Q;  ///< VAR_OUTPUT: CV <= 0
 
  private:
   BOOL cd_memory_;
 
  public:
-  T PV;                         ///< VAR_INPUT: the value LD loads
-  read_only<T, down_counter> CV;    ///< VAR_OUTPUT: the count
+  T PV;                           ///< VAR_INPUT: the value LD loads
+  read_only<T, down_counter> CV;  ///< VAR_OUTPUT: the count
 
   using VAR_INPUT = pins<&down_counter::CD, load_base::pin, &down_counter::PV>;
   using VAR_OUTPUT = pins<&down_counter::Q, &down_counter::CV>;
@@ -191,8 +190,8 @@ class up_down_counter : public function_block<up_down_counter<T, D>>,
   using load_base = detail::counter_load_input<D::counter_pin_names>;
 
  public:
-  BOOL CU;                          ///< VAR_INPUT: counts up on its rising edge
-  BOOL CD;                          ///< VAR_INPUT: counts down on its rising edge
+  BOOL CU;                              ///< VAR_INPUT: counts up on its rising edge
+  BOOL CD;                              ///< VAR_INPUT: counts down on its rising edge
   read_only<BOOL, up_down_counter> QU;  ///< VAR_OUTPUT: CV >= PV
   read_only<BOOL, up_down_counter> QD;  ///< VAR_OUTPUT: CV <= 0
 
@@ -201,10 +200,11 @@ class up_down_counter : public function_block<up_down_counter<T, D>>,
   BOOL cd_memory_;
 
  public:
-  T PV;                             ///< VAR_INPUT: the preset, and the value LD loads
-  read_only<T, up_down_counter> CV;     ///< VAR_OUTPUT: the count
+  T PV;                              ///< VAR_INPUT: the preset, and the value LD loads
+  read_only<T, up_down_counter> CV;  ///< VAR_OUTPUT: the count
 
-  using VAR_INPUT = pins<&up_down_counter::CU, &up_down_counter::CD, reset_base::pin, load_base::pin, &up_down_counter::PV>;
+  using VAR_INPUT =
+      pins<&up_down_counter::CU, &up_down_counter::CD, reset_base::pin, load_base::pin, &up_down_counter::PV>;
   using VAR_OUTPUT = pins<&up_down_counter::QU, &up_down_counter::QD, &up_down_counter::CV>;
 
  private:

@@ -27,7 +27,7 @@ namespace iecoop {
 /// R_TRIG: Q is TRUE for one call after CLK rose from FALSE to TRUE.
 class rising_edge_trigger : public function_block<rising_edge_trigger> {
  public:
-  BOOL CLK;                    ///< VAR_INPUT: the signal
+  BOOL CLK;                                ///< VAR_INPUT: the signal
   read_only<BOOL, rising_edge_trigger> Q;  ///< VAR_OUTPUT: TRUE on the call where CLK rose
 
   using VAR_INPUT = pins<&rising_edge_trigger::CLK>;
@@ -49,7 +49,7 @@ class rising_edge_trigger : public function_block<rising_edge_trigger> {
 template <Dialect D>
 class falling_edge_trigger : public function_block<falling_edge_trigger<D>> {
  public:
-  BOOL CLK;                     ///< VAR_INPUT: the signal
+  BOOL CLK;                                 ///< VAR_INPUT: the signal
   read_only<BOOL, falling_edge_trigger> Q;  ///< VAR_OUTPUT: TRUE on the call where CLK fell
 
   using VAR_INPUT = pins<&falling_edge_trigger::CLK>;

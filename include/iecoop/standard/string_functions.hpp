@@ -93,7 +93,8 @@ constexpr std::int64_t as_i64(const T& v) noexcept {
     return as_i64(v.value());
   } else if constexpr (std::is_unsigned_v<T>) {
     constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
-    return static_cast<std::uint64_t>(v) > max ? std::numeric_limits<std::int64_t>::max() : static_cast<std::int64_t>(v);
+    return static_cast<std::uint64_t>(v) > max ? std::numeric_limits<std::int64_t>::max()
+                                               : static_cast<std::int64_t>(v);
   } else {
     return static_cast<std::int64_t>(v);
   }

@@ -51,8 +51,14 @@ struct timer_state {
 
   [[nodiscard]] constexpr bool idle() const noexcept { return !running && !expired; }
   constexpr void reset() noexcept { running = expired = false; }
-  constexpr void start() noexcept { running = true; expired = false; }
-  constexpr void expire() noexcept { running = false; expired = true; }
+  constexpr void start() noexcept {
+    running = true;
+    expired = false;
+  }
+  constexpr void expire() noexcept {
+    running = false;
+    expired = true;
+  }
 };
 
 /// One call of a running timer (MatIEC's STATE = 1): sets ET to the time elapsed since
@@ -73,7 +79,8 @@ bool run_timer(Time start, Time pt, Time& et) noexcept {
 
 template <class Time>
 constexpr bool check_timer_time() {
-  static_assert(timer_time<Time>, "iecoop: a timer measures TIME or LTIME; use TON/TOF/TP (TIME) or LTON/LTOF/LTP (LTIME)");
+  static_assert(timer_time<Time>,
+                "iecoop: a timer measures TIME or LTIME; use TON/TOF/TP (TIME) or LTON/LTOF/LTP (LTIME)");
   return true;
 }
 
@@ -89,15 +96,15 @@ class on_delay_timer : public function_block<on_delay_timer<Time>> {
   static_assert(detail::check_timer_time<Time>());
 
  public:
-  BOOL IN;                    ///< VAR_INPUT: rising edge starts the timer, FALSE resets it
-  read_only<BOOL, on_delay_timer> Q;    ///< VAR_OUTPUT: TRUE while IN has been TRUE for at least PT
+  BOOL IN;                            ///< VAR_INPUT: rising edge starts the timer, FALSE resets it
+  read_only<BOOL, on_delay_timer> Q;  ///< VAR_OUTPUT: TRUE while IN has been TRUE for at least PT
 
  private:
   detail::timer_state state_;
 
  public:
-  Time PT;                    ///< VAR_INPUT: the delay
-  read_only<Time, on_delay_timer> ET;   ///< VAR_OUTPUT: the elapsed time, 0 to PT
+  Time PT;                             ///< VAR_INPUT: the delay
+  read_only<Time, on_delay_timer> ET;  ///< VAR_OUTPUT: the elapsed time, 0 to PT
 
  private:
   Time start_;
@@ -138,15 +145,15 @@ class off_delay_timer : public function_block<off_delay_timer<Time>> {
   static_assert(detail::check_timer_time<Time>());
 
  public:
-  BOOL IN;                    ///< VAR_INPUT: falling edge starts the timer, TRUE resets it
-  read_only<BOOL, off_delay_timer> Q;   ///< VAR_OUTPUT: IN, held for PT after IN falls
+  BOOL IN;                             ///< VAR_INPUT: falling edge starts the timer, TRUE resets it
+  read_only<BOOL, off_delay_timer> Q;  ///< VAR_OUTPUT: IN, held for PT after IN falls
 
  private:
   bool running_ = false;
   bool prev_in_ = false;
 
  public:
-  Time PT;                    ///< VAR_INPUT: the delay
+  Time PT;                              ///< VAR_INPUT: the delay
   read_only<Time, off_delay_timer> ET;  ///< VAR_OUTPUT: the elapsed time, 0 to PT
 
  private:
@@ -189,15 +196,15 @@ class pulse_timer : public function_block<pulse_timer<Time>> {
   static_assert(detail::check_timer_time<Time>());
 
  public:
-  BOOL IN;                  ///< VAR_INPUT: rising edge starts a pulse (ignored while one runs)
-  read_only<BOOL, pulse_timer> Q;     ///< VAR_OUTPUT: the pulse_timer
+  BOOL IN;                         ///< VAR_INPUT: rising edge starts a pulse (ignored while one runs)
+  read_only<BOOL, pulse_timer> Q;  ///< VAR_OUTPUT: the pulse_timer
 
  private:
   detail::timer_state state_;
 
  public:
-  Time PT;                  ///< VAR_INPUT: the pulse's length
-  read_only<Time, pulse_timer> ET;    ///< VAR_OUTPUT: the pulse_timer's elapsed time, 0 to PT
+  Time PT;                          ///< VAR_INPUT: the pulse's length
+  read_only<Time, pulse_timer> ET;  ///< VAR_OUTPUT: the pulse_timer's elapsed time, 0 to PT
 
  private:
   Time start_;

@@ -62,7 +62,8 @@ constexpr auto as_elementary(const T& x) noexcept {
   } else if constexpr (cpp_integer<T>) {
     return ULINT(static_cast<std::uint64_t>(x));
   } else {
-    static_assert(dependent_false<T>, "iecoop: no IEC conversion from this type; convert it to an IEC elementary type first");
+    static_assert(dependent_false<T>,
+                  "iecoop: no IEC conversion from this type; convert it to an IEC elementary type first");
     return x;
   }
 }
@@ -137,7 +138,8 @@ constexpr ToChar convert_char(FromChar c) noexcept {
  */
 template <class To, class From>
 [[nodiscard]] constexpr To convert(const From& from) noexcept {
-  static_assert(AnyElementary<To>, "iecoop: convert<To>: To must be an IEC elementary type (BOOL, INT, REAL, TIME, STRING<N>, ...)");
+  static_assert(AnyElementary<To>,
+                "iecoop: convert<To>: To must be an IEC elementary type (BOOL, INT, REAL, TIME, STRING<N>, ...)");
   const auto x = detail::as_elementary(from);
   using X = std::remove_cv_t<decltype(x)>;
 

@@ -90,9 +90,8 @@ constexpr void no_implicit_conversion() {
 }
 
 template <class T>
-inline constexpr bool is_char_v = std::is_same_v<T, char> || std::is_same_v<T, wchar_t> ||
-                                  std::is_same_v<T, char8_t> || std::is_same_v<T, char16_t> ||
-                                  std::is_same_v<T, char32_t>;
+inline constexpr bool is_char_v = std::is_same_v<T, char> || std::is_same_v<T, wchar_t> || std::is_same_v<T, char8_t> ||
+                                  std::is_same_v<T, char16_t> || std::is_same_v<T, char32_t>;
 
 /// A built-in C++ integer type (not bool, not a character type).
 template <class T>
@@ -107,9 +106,8 @@ class BOOL;
 namespace detail {
 /// Two operands of a BOOL operation: BOOL or C++ bool, at least one of them a BOOL.
 template <class A, class B>
-concept bool_operands = (std::is_same_v<A, BOOL> || std::is_same_v<A, bool>) &&
-                        (std::is_same_v<B, BOOL> || std::is_same_v<B, bool>) &&
-                        (std::is_same_v<A, BOOL> || std::is_same_v<B, BOOL>);
+concept bool_operands =
+    occurs_in<A, BOOL, bool> && occurs_in<B, BOOL, bool> && (std::is_same_v<A, BOOL> || std::is_same_v<B, BOOL>);
 /// A number a BOOL might meet: a C++ number (which C++ would silently combine with the BOOL's
 /// 0 or 1), a REAL or an IEC integer.
 template <class T>
@@ -117,12 +115,12 @@ concept number_for_bool = (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) 
                           is_integer<T>::value || is_intermediate<T>::value;
 /// A BOOL meeting a number: C++ would compute with it as 0 or 1; ST does not compile it.
 template <class A, class B>
-concept bool_with_number = (std::is_same_v<A, BOOL> && (number_for_bool<B> || std::is_same_v<B, BOOL> ||
-                                                        std::is_same_v<B, bool>)) ||
-                           (std::is_same_v<B, BOOL> && (number_for_bool<A> || std::is_same_v<A, bool>));
+concept bool_with_number =
+    (std::is_same_v<A, BOOL> && (number_for_bool<B> || std::is_same_v<B, BOOL> || std::is_same_v<B, bool>)) ||
+    (std::is_same_v<B, BOOL> && (number_for_bool<A> || std::is_same_v<A, bool>));
 template <class A, class B>
-concept bool_compared_with_number = (std::is_same_v<A, BOOL> && number_for_bool<B>) ||
-                                    (std::is_same_v<B, BOOL> && number_for_bool<A>);
+concept bool_compared_with_number =
+    (std::is_same_v<A, BOOL> && number_for_bool<B>) || (std::is_same_v<B, BOOL> && number_for_bool<A>);
 
 template <class T>
 constexpr bool bool_is_no_number() {
@@ -221,7 +219,9 @@ class BOOL {
   friend constexpr BOOL operator>=(const A& a, const B& b) noexcept {
     return BOOL(bit(a) >= bit(b));
   }
-  friend constexpr std::strong_ordering operator<=>(const BOOL& a, const BOOL& b) noexcept { return a.value_ <=> b.value_; }
+  friend constexpr std::strong_ordering operator<=>(const BOOL& a, const BOOL& b) noexcept {
+    return a.value_ <=> b.value_;
+  }
 
   constexpr BOOL& operator&=(const BOOL& b) noexcept { return *this = *this & b; }
   constexpr BOOL& operator|=(const BOOL& b) noexcept { return *this = *this | b; }
@@ -281,22 +281,34 @@ class BOOL {
   }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend bool operator==(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  friend bool operator==(const A&, const B&) {
+    return detail::bool_is_no_number<A>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend bool operator!=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  friend bool operator!=(const A&, const B&) {
+    return detail::bool_is_no_number<A>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend bool operator<(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  friend bool operator<(const A&, const B&) {
+    return detail::bool_is_no_number<A>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend bool operator<=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  friend bool operator<=(const A&, const B&) {
+    return detail::bool_is_no_number<A>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend bool operator>(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  friend bool operator>(const A&, const B&) {
+    return detail::bool_is_no_number<A>();
+  }
   template <class A, class B>
     requires detail::bool_compared_with_number<A, B>
-  friend bool operator>=(const A&, const B&) { return detail::bool_is_no_number<A>(); }
+  friend bool operator>=(const A&, const B&) {
+    return detail::bool_is_no_number<A>();
+  }
   template <std::same_as<BOOL> B>
   friend constexpr BOOL operator-(const B&) {
     detail::bool_is_no_number<B>();
@@ -387,13 +399,15 @@ inline constexpr bool both_widen_to = widens_implicitly<A, integer<Rep, integer_
 /// or void (LINT and ULINT; a bit string and an integer).
 template <class A, class B, class Rep = std::int8_t>
 struct common_signed {
-  using next = std::conditional_t<sizeof(Rep) == 1, std::int16_t, std::conditional_t<sizeof(Rep) == 2, std::int32_t, std::int64_t>>;
+  using next = std::conditional_t<sizeof(Rep) == 1, std::int16_t,
+                                  std::conditional_t<sizeof(Rep) == 2, std::int32_t, std::int64_t>>;
   using type = std::conditional_t<both_widen_to<A, B, Rep>, integer<Rep, integer_kind::signed_int>,
                                   typename common_signed<A, B, next>::type>;
 };
 template <class A, class B>
 struct common_signed<A, B, std::int64_t> {
-  using type = std::conditional_t<both_widen_to<A, B, std::int64_t>, integer<std::int64_t, integer_kind::signed_int>, void>;
+  using type =
+      std::conditional_t<both_widen_to<A, B, std::int64_t>, integer<std::int64_t, integer_kind::signed_int>, void>;
 };
 template <class A, class B>
 using common_signed_t = typename common_signed<A, B>::type;
@@ -403,8 +417,8 @@ using common_signed_t = typename common_signed<A, B>::type;
 /// meet as DINT, as IEC widens both to DINT implicitly); void where there is none (a bit
 /// string and an integer, LINT and ULINT) or either is no IEC integer type.
 template <class A, class B>
-using common_integer_t =
-    std::conditional_t<widens_implicitly<A, B>, B, std::conditional_t<widens_implicitly<B, A>, A, common_signed_t<A, B>>>;
+using common_integer_t = std::conditional_t<widens_implicitly<A, B>, B,
+                                            std::conditional_t<widens_implicitly<B, A>, A, common_signed_t<A, B>>>;
 
 /// Two IEC integer types that meet only in a third type (INT and UINT as DINT).
 template <class A, class B>
@@ -418,11 +432,12 @@ concept narrower_result = is_integer<U>::value && !widens_implicitly<T, U>;
 /// The register an intermediate result of IEC type T is held in: register_bits, or wider for
 /// a wider T; signed for the signed integers, unsigned for the others.
 template <class T>
-using register_t = std::conditional_t<
-    (sizeof(typename T::rep) * CHAR_BIT > static_cast<std::size_t>(register_bits) ? sizeof(typename T::rep) * CHAR_BIT
-                                                                                  : static_cast<std::size_t>(register_bits)) == 64,
-    std::conditional_t<T::kind == integer_kind::signed_int, std::int64_t, std::uint64_t>,
-    std::conditional_t<T::kind == integer_kind::signed_int, std::int32_t, std::uint32_t>>;
+using register_t =
+    std::conditional_t<(sizeof(typename T::rep) * CHAR_BIT > static_cast<std::size_t>(register_bits)
+                            ? sizeof(typename T::rep) * CHAR_BIT
+                            : static_cast<std::size_t>(register_bits)) == 64,
+                       std::conditional_t<T::kind == integer_kind::signed_int, std::int64_t, std::uint64_t>,
+                       std::conditional_t<T::kind == integer_kind::signed_int, std::int32_t, std::uint32_t>>;
 
 /// The value of an integer operand (a variable's or an intermediate's) in the register of IEC
 /// type R: sign- or zero-extended from its own, then taken modulo 2^bits.
@@ -435,9 +450,15 @@ constexpr register_t<R> in_register(const X& x) noexcept {
 template <class Reg>
 struct register_math {
   using wide = std::make_unsigned_t<Reg>;
-  static constexpr Reg add(Reg a, Reg b) noexcept { return static_cast<Reg>(static_cast<wide>(a) + static_cast<wide>(b)); }
-  static constexpr Reg sub(Reg a, Reg b) noexcept { return static_cast<Reg>(static_cast<wide>(a) - static_cast<wide>(b)); }
-  static constexpr Reg mul(Reg a, Reg b) noexcept { return static_cast<Reg>(static_cast<wide>(a) * static_cast<wide>(b)); }
+  static constexpr Reg add(Reg a, Reg b) noexcept {
+    return static_cast<Reg>(static_cast<wide>(a) + static_cast<wide>(b));
+  }
+  static constexpr Reg sub(Reg a, Reg b) noexcept {
+    return static_cast<Reg>(static_cast<wide>(a) - static_cast<wide>(b));
+  }
+  static constexpr Reg mul(Reg a, Reg b) noexcept {
+    return static_cast<Reg>(static_cast<wide>(a) * static_cast<wide>(b));
+  }
   static constexpr Reg neg(Reg a) noexcept { return static_cast<Reg>(wide{0} - static_cast<wide>(a)); }
   static constexpr Reg complement(Reg a) noexcept { return static_cast<Reg>(~static_cast<wide>(a)); }
   // Division truncates toward zero; the one quotient that overflows (MIN / -1) wraps.
@@ -456,7 +477,9 @@ struct register_math {
 };
 
 /// Integer division or MOD by zero: a fault, and the result 0.
-inline void integer_division_by_zero() { fault(fault_kind::division_by_zero, "integer division or MOD by zero; the result is 0"); }
+inline void integer_division_by_zero() {
+  fault(fault_kind::division_by_zero, "integer division or MOD by zero; the result is 0");
+}
 
 /// The diagnostic of an operation between integer types without a common type; the template
 /// arguments spell both IEC names.
@@ -479,9 +502,9 @@ constexpr nominal_t<A> no_common_type() {
 template <class A, class B>
 concept mixed_int_operands =
     int_value<A> && int_value<B> &&
-    (is_intermediate<A>::value || is_intermediate<B>::value || meet_in_third_type<nominal_t<A>, nominal_t<B>>) &&
-    !(is_intermediate<A>::value && is_intermediate<B>::value && std::is_same_v<A, B>) &&
-    !std::is_void_v<common_integer_t<nominal_t<A>, nominal_t<B>>>;
+    (is_intermediate<A>::value || is_intermediate<B>::value || meet_in_third_type<nominal_t<A>, nominal_t<B>>)&&!(
+        is_intermediate<A>::value && is_intermediate<B>::value &&
+        std::is_same_v<A, B>)&&!std::is_void_v<common_integer_t<nominal_t<A>, nominal_t<B>>>;
 
 /// An IEC value of type V (or an intermediate result of type V) that does not convert
 /// implicitly into T: what an assignment rejects with no_implicit_conversion.
@@ -536,7 +559,10 @@ class integer {
     requires(!detail::range_within<T, Rep>)
   consteval integer(T constant) : value_(static_cast<Rep>(constant)) {  // implicit on purpose
     if (!std::in_range<Rep>(constant)) {
+      // The compiler shows the call's line, which must hold the whole message.
+      // clang-format off
       detail::compile_error("iecoop: integer constant out of range for this IEC type; use a wider type or an explicit conversion");
+      // clang-format on
     }
   }
 
@@ -553,7 +579,8 @@ class integer {
   template <class V>
     requires detail::rejected_conversion<V, integer>
   constexpr void operator=(const V&) noexcept {
-    detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>, detail::spelled_iec_name_t<integer>>();
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>,
+                                   detail::spelled_iec_name_t<integer>>();
   }
 
   /// The value as its C++ integer type.
@@ -567,9 +594,15 @@ class integer {
   }
 
   // Arithmetic: the intermediate result in the target's registers (see intermediate<T>).
-  friend constexpr intermediate<integer> operator+(integer a, integer b) noexcept { return reg(math::add(in_reg(a), in_reg(b))); }
-  friend constexpr intermediate<integer> operator-(integer a, integer b) noexcept { return reg(math::sub(in_reg(a), in_reg(b))); }
-  friend constexpr intermediate<integer> operator*(integer a, integer b) noexcept { return reg(math::mul(in_reg(a), in_reg(b))); }
+  friend constexpr intermediate<integer> operator+(integer a, integer b) noexcept {
+    return reg(math::add(in_reg(a), in_reg(b)));
+  }
+  friend constexpr intermediate<integer> operator-(integer a, integer b) noexcept {
+    return reg(math::sub(in_reg(a), in_reg(b)));
+  }
+  friend constexpr intermediate<integer> operator*(integer a, integer b) noexcept {
+    return reg(math::mul(in_reg(a), in_reg(b)));
+  }
   friend constexpr intermediate<integer> operator/(integer a, integer b) {
     if (b.value_ == 0) return zero_after_division_fault();
     return reg(math::div(in_reg(a), in_reg(b)));
@@ -629,19 +662,29 @@ class integer {
   // A BOOL, a REAL, a TIME...: ST's `i := i + v` does not assign the result to an integer.
   template <class V>
     requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
-  constexpr void operator+=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  constexpr void operator+=(const V&) {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>();
+  }
   template <class V>
     requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
-  constexpr void operator-=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  constexpr void operator-=(const V&) {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>();
+  }
   template <class V>
     requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
-  constexpr void operator*=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  constexpr void operator*=(const V&) {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>();
+  }
   template <class V>
     requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
-  constexpr void operator/=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  constexpr void operator/=(const V&) {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>();
+  }
   template <class V>
     requires(detail::is_iec_value<V>::value && !detail::int_value<V>)
-  constexpr void operator%=(const V&) { detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>(); }
+  constexpr void operator%=(const V&) {
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>();
+  }
   constexpr integer& operator&=(integer b) noexcept { return *this = *this & b; }
   constexpr integer& operator|=(integer b) noexcept { return *this = *this | b; }
   constexpr integer& operator^=(integer b) noexcept { return *this = *this ^ b; }
@@ -671,7 +714,9 @@ class integer {
  private:
   using math = detail::register_math<detail::register_t<integer>>;
   static constexpr detail::register_t<integer> in_reg(integer x) noexcept { return detail::in_register<integer>(x); }
-  static constexpr intermediate<integer> reg(detail::register_t<integer> r) noexcept { return intermediate<integer>::from_register(r); }
+  static constexpr intermediate<integer> reg(detail::register_t<integer> r) noexcept {
+    return intermediate<integer>::from_register(r);
+  }
   static intermediate<integer> zero_after_division_fault() {
     detail::integer_division_by_zero();
     return intermediate<integer>();
@@ -686,7 +731,6 @@ struct detail::is_scalar_wrapper<integer<Rep, Kind>> : std::true_type {};
 template <class Rep, integer_kind Kind>
 struct detail::is_iec_value<integer<Rep, Kind>> : std::true_type {};
 
-
 using SINT = integer<std::int8_t, integer_kind::signed_int>;
 using INT = integer<std::int16_t, integer_kind::signed_int>;
 using DINT = integer<std::int32_t, integer_kind::signed_int>;
@@ -700,18 +744,54 @@ using WORD = integer<std::uint16_t, integer_kind::bit_string>;
 using DWORD = integer<std::uint32_t, integer_kind::bit_string>;
 using LWORD = integer<std::uint64_t, integer_kind::bit_string>;
 
-template <> struct detail::iec_name<SINT> { static constexpr std::string_view value = "SINT"; };
-template <> struct detail::iec_name<INT> { static constexpr std::string_view value = "INT"; };
-template <> struct detail::iec_name<DINT> { static constexpr std::string_view value = "DINT"; };
-template <> struct detail::iec_name<LINT> { static constexpr std::string_view value = "LINT"; };
-template <> struct detail::iec_name<USINT> { static constexpr std::string_view value = "USINT"; };
-template <> struct detail::iec_name<UINT> { static constexpr std::string_view value = "UINT"; };
-template <> struct detail::iec_name<UDINT> { static constexpr std::string_view value = "UDINT"; };
-template <> struct detail::iec_name<ULINT> { static constexpr std::string_view value = "ULINT"; };
-template <> struct detail::iec_name<BYTE> { static constexpr std::string_view value = "BYTE"; };
-template <> struct detail::iec_name<WORD> { static constexpr std::string_view value = "WORD"; };
-template <> struct detail::iec_name<DWORD> { static constexpr std::string_view value = "DWORD"; };
-template <> struct detail::iec_name<LWORD> { static constexpr std::string_view value = "LWORD"; };
+template <>
+struct detail::iec_name<SINT> {
+  static constexpr std::string_view value = "SINT";
+};
+template <>
+struct detail::iec_name<INT> {
+  static constexpr std::string_view value = "INT";
+};
+template <>
+struct detail::iec_name<DINT> {
+  static constexpr std::string_view value = "DINT";
+};
+template <>
+struct detail::iec_name<LINT> {
+  static constexpr std::string_view value = "LINT";
+};
+template <>
+struct detail::iec_name<USINT> {
+  static constexpr std::string_view value = "USINT";
+};
+template <>
+struct detail::iec_name<UINT> {
+  static constexpr std::string_view value = "UINT";
+};
+template <>
+struct detail::iec_name<UDINT> {
+  static constexpr std::string_view value = "UDINT";
+};
+template <>
+struct detail::iec_name<ULINT> {
+  static constexpr std::string_view value = "ULINT";
+};
+template <>
+struct detail::iec_name<BYTE> {
+  static constexpr std::string_view value = "BYTE";
+};
+template <>
+struct detail::iec_name<WORD> {
+  static constexpr std::string_view value = "WORD";
+};
+template <>
+struct detail::iec_name<DWORD> {
+  static constexpr std::string_view value = "DWORD";
+};
+template <>
+struct detail::iec_name<LWORD> {
+  static constexpr std::string_view value = "LWORD";
+};
 
 // ---------------------------------------------------------------------------------------
 // Intermediate results
@@ -744,12 +824,16 @@ class intermediate {
 
   constexpr intermediate() noexcept = default;
   /// The value of a variable of type T.
-  constexpr intermediate(T value) noexcept : value_(detail::in_register<T>(value)) {}  // implicit: a value is an expression
+  constexpr intermediate(T value) noexcept
+      : value_(detail::in_register<T>(value)) {}  // implicit: a value is an expression
   /// A C++ integer constant in an expression (`(i + 1) * 2`): checked against T while compiling.
   template <detail::cpp_integer C>
   consteval intermediate(C constant) : value_(static_cast<rep>(constant)) {  // implicit on purpose
     if (!std::in_range<typename T::rep>(constant)) {
+      // The compiler shows the call's line, which must hold the whole message.
+      // clang-format off
       detail::compile_error("iecoop: integer constant out of range for this IEC type; use a wider type or an explicit conversion");
+      // clang-format on
     }
   }
   /// A register holding `r`.
@@ -787,9 +871,15 @@ class intermediate {
     return static_cast<C>(value_);
   }
 
-  friend constexpr intermediate operator+(intermediate a, intermediate b) noexcept { return from_register(math::add(a.value_, b.value_)); }
-  friend constexpr intermediate operator-(intermediate a, intermediate b) noexcept { return from_register(math::sub(a.value_, b.value_)); }
-  friend constexpr intermediate operator*(intermediate a, intermediate b) noexcept { return from_register(math::mul(a.value_, b.value_)); }
+  friend constexpr intermediate operator+(intermediate a, intermediate b) noexcept {
+    return from_register(math::add(a.value_, b.value_));
+  }
+  friend constexpr intermediate operator-(intermediate a, intermediate b) noexcept {
+    return from_register(math::sub(a.value_, b.value_));
+  }
+  friend constexpr intermediate operator*(intermediate a, intermediate b) noexcept {
+    return from_register(math::mul(a.value_, b.value_));
+  }
   friend constexpr intermediate operator/(intermediate a, intermediate b) {
     if (b.value_ == 0) return zero_after_division_fault();
     return from_register(math::div(a.value_, b.value_));
@@ -798,9 +888,15 @@ class intermediate {
     if (b.value_ == 0) return zero_after_division_fault();
     return from_register(math::mod(a.value_, b.value_));
   }
-  friend constexpr intermediate operator&(intermediate a, intermediate b) noexcept { return from_register(static_cast<rep>(a.value_ & b.value_)); }
-  friend constexpr intermediate operator|(intermediate a, intermediate b) noexcept { return from_register(static_cast<rep>(a.value_ | b.value_)); }
-  friend constexpr intermediate operator^(intermediate a, intermediate b) noexcept { return from_register(static_cast<rep>(a.value_ ^ b.value_)); }
+  friend constexpr intermediate operator&(intermediate a, intermediate b) noexcept {
+    return from_register(static_cast<rep>(a.value_ & b.value_));
+  }
+  friend constexpr intermediate operator|(intermediate a, intermediate b) noexcept {
+    return from_register(static_cast<rep>(a.value_ | b.value_));
+  }
+  friend constexpr intermediate operator^(intermediate a, intermediate b) noexcept {
+    return from_register(static_cast<rep>(a.value_ ^ b.value_));
+  }
   friend constexpr intermediate operator-(intermediate a) noexcept { return from_register(math::neg(a.value_)); }
   friend constexpr intermediate operator+(intermediate a) noexcept { return a; }
   friend constexpr intermediate operator~(intermediate a) noexcept { return from_register(math::complement(a.value_)); }
@@ -811,7 +907,9 @@ class intermediate {
   friend constexpr BOOL operator<=(intermediate a, intermediate b) noexcept { return BOOL(a.value_ <= b.value_); }
   friend constexpr BOOL operator>(intermediate a, intermediate b) noexcept { return BOOL(a.value_ > b.value_); }
   friend constexpr BOOL operator>=(intermediate a, intermediate b) noexcept { return BOOL(a.value_ >= b.value_); }
-  friend constexpr std::strong_ordering operator<=>(intermediate a, intermediate b) noexcept { return a.value_ <=> b.value_; }
+  friend constexpr std::strong_ordering operator<=>(intermediate a, intermediate b) noexcept {
+    return a.value_ <=> b.value_;
+  }
 
  private:
   using math = detail::register_math<rep>;
@@ -913,49 +1011,57 @@ template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator+(const A& a, const B& b) noexcept {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) + intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) +
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator-(const A& a, const B& b) noexcept {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) - intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) -
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator*(const A& a, const B& b) noexcept {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) * intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) *
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator/(const A& a, const B& b) {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) / intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) /
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator%(const A& a, const B& b) {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) % intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) %
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator&(const A& a, const B& b) noexcept {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) & intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) &
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator|(const A& a, const B& b) noexcept {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) | intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) |
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
 constexpr intermediate<detail::mixed_common_t<A, B>> operator^(const A& a, const B& b) noexcept {
   using C = detail::mixed_common_t<A, B>;
-  return intermediate<C>::from_register(detail::in_register<C>(a)) ^ intermediate<C>::from_register(detail::in_register<C>(b));
+  return intermediate<C>::from_register(detail::in_register<C>(a)) ^
+         intermediate<C>::from_register(detail::in_register<C>(b));
 }
 template <class A, class B>
   requires detail::mixed_int_operands<A, B>
@@ -1003,36 +1109,81 @@ constexpr std::strong_ordering operator<=>(const A& a, const B& b) noexcept {
 // Arithmetic, bitwise operations and comparisons between unrelated integer types: rejected
 // with a message instead of an unhelpful "no match for operator". Each returns a value of a
 // plausible type, so that the message is the only error.
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator+(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator-(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator*(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator/(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator%(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator&(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator|(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-detail::nominal_t<A> operator^(const A&, const B&) { return detail::no_common_type<A, B>(); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-BOOL operator==(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-BOOL operator!=(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-BOOL operator<(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-BOOL operator<=(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-BOOL operator>(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-BOOL operator>=(const A&, const B&) { return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>()); }
-template <class A, class B> requires detail::unrelated_integers<A, B>
-std::strong_ordering operator<=>(const A&, const B&) { return detail::no_common_type<A, B>().value() <=> 0; }
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator+(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator-(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator*(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator/(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator%(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator&(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator|(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+detail::nominal_t<A> operator^(const A&, const B&) {
+  return detail::no_common_type<A, B>();
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+BOOL operator==(const A&, const B&) {
+  return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>());
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+BOOL operator!=(const A&, const B&) {
+  return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>());
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+BOOL operator<(const A&, const B&) {
+  return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>());
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+BOOL operator<=(const A&, const B&) {
+  return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>());
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+BOOL operator>(const A&, const B&) {
+  return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>());
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+BOOL operator>=(const A&, const B&) {
+  return BOOL(detail::no_common_type<A, B>() == detail::nominal_t<A>());
+}
+template <class A, class B>
+  requires detail::unrelated_integers<A, B>
+std::strong_ordering operator<=>(const A&, const B&) {
+  return detail::no_common_type<A, B>().value() <=> 0;
+}
 
 // ---------------------------------------------------------------------------------------
 // REAL and LREAL
@@ -1047,15 +1198,17 @@ concept real_comparand = (std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) |
 /// defined through real_comparand: a constraint that subsumes the other would make C++ prefer
 /// the reversed candidate of `r == 1.0`, which must return bool.
 template <class Rep, class U>
-concept real_left_comparand = !is_real<U>::value && ((std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) ||
-                                                     ((is_integer<U>::value || is_intermediate<U>::value) &&
-                                                      std::is_convertible_v<U, real<Rep>>));
+concept real_left_comparand =
+    !is_real<U>::value &&
+    ((std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) ||
+     ((is_integer<U>::value || is_intermediate<U>::value) && std::is_convertible_v<U, real<Rep>>));
 
 /// The right operand of a REAL's `+=`: a C++ number (a constant), a REAL no wider, or an
 /// integer value the type holds exactly.
 template <class Rep, class U>
 concept real_compound_operand =
-    (std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) || (is_real<U>::value && sizeof(typename U::rep) <= sizeof(Rep)) ||
+    (std::is_arithmetic_v<U> && !std::is_same_v<U, bool>) ||
+    (is_real<U>::value && sizeof(typename U::rep) <= sizeof(Rep)) ||
     ((is_integer<U>::value || is_intermediate<U>::value) && std::is_convertible_v<nominal_t<U>, real<Rep>>);
 /// Any other IEC value (a BOOL, a DINT beside a REAL, an LREAL, a TIME): rejected.
 template <class Rep, class U>
@@ -1110,14 +1263,16 @@ class real {
   /// Assigning a value of another IEC type that does not convert implicitly (`r = l;` for an
   /// LREAL, `r = i * 2.5;`, `r = b;` for a BOOL): rejected, naming the conversion to write.
   template <class V>
-    requires(detail::is_iec_value<V>::value && !detail::is_intermediate<V>::value && !std::is_convertible_v<const V&, real>)
+    requires(detail::is_iec_value<V>::value && !detail::is_intermediate<V>::value &&
+             !std::is_convertible_v<const V&, real>)
   constexpr void operator=(const V&) noexcept {
     detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<real>>();
   }
   template <class V>
     requires(detail::is_intermediate<V>::value && !std::is_convertible_v<const V&, real>)
   constexpr void operator=(const V&) noexcept {
-    detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>, detail::spelled_iec_name_t<real>>();
+    detail::no_implicit_conversion<detail::spelled_iec_name_t<detail::nominal_t<V>>,
+                                   detail::spelled_iec_name_t<real>>();
   }
 
   constexpr operator Rep() const noexcept { return value_; }  // implicit: behaves as its float
@@ -1152,16 +1307,24 @@ class real {
   }
   template <class U>
     requires detail::rejected_real_operand<Rep, U>
-  constexpr void operator+=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  constexpr void operator+=(const U&) noexcept {
+    detail::reject_real_operand<Rep, U>();
+  }
   template <class U>
     requires detail::rejected_real_operand<Rep, U>
-  constexpr void operator-=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  constexpr void operator-=(const U&) noexcept {
+    detail::reject_real_operand<Rep, U>();
+  }
   template <class U>
     requires detail::rejected_real_operand<Rep, U>
-  constexpr void operator*=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  constexpr void operator*=(const U&) noexcept {
+    detail::reject_real_operand<Rep, U>();
+  }
   template <class U>
     requires detail::rejected_real_operand<Rep, U>
-  constexpr void operator/=(const U&) noexcept { detail::reject_real_operand<Rep, U>(); }
+  constexpr void operator/=(const U&) noexcept {
+    detail::reject_real_operand<Rep, U>();
+  }
 
   // Comparisons yield BOOL (templates: exact matches, chosen over C++'s own float operators).
   template <class U>
@@ -1237,8 +1400,14 @@ struct detail::is_iec_value<real<Rep>> : std::true_type {};
 
 using REAL = real<float>;
 using LREAL = real<double>;
-template <> struct detail::iec_name<REAL> { static constexpr std::string_view value = "REAL"; };
-template <> struct detail::iec_name<LREAL> { static constexpr std::string_view value = "LREAL"; };
+template <>
+struct detail::iec_name<REAL> {
+  static constexpr std::string_view value = "REAL";
+};
+template <>
+struct detail::iec_name<LREAL> {
+  static constexpr std::string_view value = "LREAL";
+};
 
 // ---------------------------------------------------------------------------------------
 // REAL with integers
@@ -1268,20 +1437,21 @@ struct real_side<double> {
 /// C++ float/double): ST converts the integer implicitly where the real type holds it exactly
 /// (INT with REAL, DINT with LREAL), and computes in the real type.
 template <class I, class F>
-concept integer_with_real = (is_integer<I>::value || is_intermediate<I>::value) && !std::is_void_v<typename real_side<F>::type> &&
-                            std::is_convertible_v<nominal_t<I>, real<typename real_side<F>::type>>;
+concept integer_with_real =
+    (is_integer<I>::value || is_intermediate<I>::value) && !std::is_void_v<typename real_side<F>::type> &&
+    std::is_convertible_v<nominal_t<I>, real<typename real_side<F>::type>>;
 template <class A, class B>
 concept real_mix = integer_with_real<A, B> || integer_with_real<B, A>;
 /// An IEC integer value beside a REAL/LREAL that cannot hold it exactly (DINT with REAL).
 template <class I, class F>
-concept inexact_integer_with_real = (is_integer<I>::value || is_intermediate<I>::value) &&
-                                    !std::is_void_v<typename real_side<F>::type> &&
-                                    !std::is_convertible_v<nominal_t<I>, real<typename real_side<F>::type>>;
+concept inexact_integer_with_real =
+    (is_integer<I>::value || is_intermediate<I>::value) && !std::is_void_v<typename real_side<F>::type> &&
+    !std::is_convertible_v<nominal_t<I>, real<typename real_side<F>::type>>;
 template <class A, class B>
 concept inexact_real_mix = inexact_integer_with_real<A, B> || inexact_integer_with_real<B, A>;
 template <class A, class B>
 using real_mix_rep = std::conditional_t<std::is_void_v<typename real_side<A>::type>, typename real_side<B>::type,
-                                       typename real_side<A>::type>;
+                                        typename real_side<A>::type>;
 /// The real type of an integer-with-real operation that needs a conversion (DINT * 0.5f).
 template <class A, class B>
 using inexact_real_t = real<real_mix_rep<A, B>>;
@@ -1335,16 +1505,24 @@ constexpr real<detail::real_mix_rep<A, B>> operator/(const A& a, const B& b) noe
 // An integer the real type cannot hold exactly: rejected, naming the conversion to write.
 template <class A, class B>
   requires detail::inexact_real_mix<A, B>
-detail::inexact_real_t<A, B> operator+(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+detail::inexact_real_t<A, B> operator+(const A&, const B&) {
+  return detail::no_exact_real<A, B>();
+}
 template <class A, class B>
   requires detail::inexact_real_mix<A, B>
-detail::inexact_real_t<A, B> operator-(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+detail::inexact_real_t<A, B> operator-(const A&, const B&) {
+  return detail::no_exact_real<A, B>();
+}
 template <class A, class B>
   requires detail::inexact_real_mix<A, B>
-detail::inexact_real_t<A, B> operator*(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+detail::inexact_real_t<A, B> operator*(const A&, const B&) {
+  return detail::no_exact_real<A, B>();
+}
 template <class A, class B>
   requires detail::inexact_real_mix<A, B>
-detail::inexact_real_t<A, B> operator/(const A&, const B&) { return detail::no_exact_real<A, B>(); }
+detail::inexact_real_t<A, B> operator/(const A&, const B&) {
+  return detail::no_exact_real<A, B>();
+}
 
 // Comparisons of an integer with a C++ float or double constant (with a REAL they are REAL's).
 template <class A, class B>

@@ -134,7 +134,8 @@ constexpr digit_run read_decimal(std::string_view s, std::size_t& i) noexcept {
   }
   while (i < s.size()) {
     if (is_digit(s[i])) {
-      if (!run.overflow && !mul_add(run.value, 10, static_cast<std::uint64_t>(s[i] - '0'), run.value)) run.overflow = true;
+      if (!run.overflow && !mul_add(run.value, 10, static_cast<std::uint64_t>(s[i] - '0'), run.value))
+        run.overflow = true;
       ++run.digits;
       ++i;
     } else if (s[i] == '_') {
@@ -160,12 +161,8 @@ struct duration_unit {
 };
 inline constexpr duration_unit duration_units[] = {
     {"d", 86'400'000'000'000ULL, 0},  // days: only ever the first unit, never limited
-    {"h", 3'600'000'000'000ULL, 24},
-    {"m", 60'000'000'000ULL, 60},
-    {"s", 1'000'000'000ULL, 60},
-    {"ms", 1'000'000ULL, 1000},
-    {"us", 1'000ULL, 1000},
-    {"ns", 1ULL, 1000},
+    {"h", 3'600'000'000'000ULL, 24}, {"m", 60'000'000'000ULL, 60}, {"s", 1'000'000'000ULL, 60},
+    {"ms", 1'000'000ULL, 1000},      {"us", 1'000ULL, 1000},       {"ns", 1ULL, 1000},
 };
 inline constexpr std::size_t no_unit = sizeof(duration_units) / sizeof(duration_units[0]);
 
@@ -209,7 +206,8 @@ constexpr parse_result<std::uint64_t> parse_duration_body(std::string_view s, st
     if (previous_unit != no_unit && unit <= previous_unit) return {parse_error::unit_order, offset + unit_at};
     if (whole.overflow) return {parse_error::out_of_range, offset + number_at};
     const duration_unit& u = duration_units[unit];
-    if (!lenient && previous_unit != no_unit && whole.value >= u.limit) return {parse_error::unit_overflow, offset + number_at};
+    if (!lenient && previous_unit != no_unit && whole.value >= u.limit)
+      return {parse_error::unit_overflow, offset + number_at};
     if (!mul_add(whole.value, u.ns, total, total)) return {parse_error::out_of_range, offset + number_at};
     if (has_fraction) {
       // Each fraction digit adds digit * ns / 10^k, which must be a whole number of ns.
@@ -329,11 +327,16 @@ template <AnyInteger T>
     while (j < text.size() && detail::is_digit(text[j])) ++j;
     if (j < text.size() && text[j] == '#') {
       const std::string_view b = text.substr(i, j - i);
-      if (b == "2") base = 2;
-      else if (b == "8") base = 8;
-      else if (b == "10") base = 10;
-      else if (b == "16") base = 16;
-      else return {parse_error::invalid_base, i};
+      if (b == "2")
+        base = 2;
+      else if (b == "8")
+        base = 8;
+      else if (b == "10")
+        base = 10;
+      else if (b == "16")
+        base = 16;
+      else
+        return {parse_error::invalid_base, i};
       if (negative && base != 10) return {parse_error::invalid_base, i};
       i = j + 1;
     }
@@ -379,7 +382,8 @@ template <AnyInteger T>
       return T(static_cast<rep>(std::uint64_t{0} - magnitude));  // modular: exact in range
     }
   }
-  if (magnitude > static_cast<std::uint64_t>(std::numeric_limits<rep>::max())) return {parse_error::out_of_range, digits_at};
+  if (magnitude > static_cast<std::uint64_t>(std::numeric_limits<rep>::max()))
+    return {parse_error::out_of_range, digits_at};
   return T(static_cast<rep>(magnitude));
 }
 
@@ -450,7 +454,7 @@ inline constexpr std::size_t max_text_length = 0;
 template <AnyInteger T>
 inline constexpr std::size_t max_text_length<T> = std::numeric_limits<typename T::rep>::digits10 + 2;
 template <>
-inline constexpr std::size_t max_text_length<BOOL> = 5;   // FALSE
+inline constexpr std::size_t max_text_length<BOOL> = 5;  // FALSE
 template <>
 inline constexpr std::size_t max_text_length<TIME> = 18;  // T#49d17h2m47s295ms
 template <>

@@ -29,21 +29,40 @@ namespace detail {
 template <parse_error E>
 consteval void check_literal() noexcept {
   static_assert(E != parse_error::empty, "iecoop: empty IEC literal; write e.g. \"T#1s\"_iec");
-  static_assert(E != parse_error::missing_prefix, "iecoop: an IEC duration literal needs its prefix; write \"T#15ms\", not \"15ms\"");
-  static_assert(E != parse_error::wrong_prefix, "iecoop: unknown literal prefix; use T#, TIME#, LT#, LTIME#, BOOL# or an integer type such as INT# or WORD#");
+  static_assert(E != parse_error::missing_prefix,
+                "iecoop: an IEC duration literal needs its prefix; write \"T#15ms\", not \"15ms\"");
+  static_assert(
+      E != parse_error::wrong_prefix,
+      "iecoop: unknown literal prefix; use T#, TIME#, LT#, LTIME#, BOOL# or an integer type such as INT# or WORD#");
   static_assert(E != parse_error::no_value, "iecoop: nothing follows the '#' of the IEC literal; write e.g. \"T#0ms\"");
-  static_assert(E != parse_error::expected_digit, "iecoop: the IEC literal has a character where a digit belongs; check the number");
-  static_assert(E != parse_error::misplaced_underscore, "iecoop: '_' may only stand between two digits or between a unit and the next number (\"T#1h_30m\", \"1_000\")");
-  static_assert(E != parse_error::missing_unit, "iecoop: a number in a duration literal has no unit; add d, h, m, s, ms, us or ns");
-  static_assert(E != parse_error::unknown_unit, "iecoop: unknown unit in a duration literal; the units are d, h, m, s, ms, us, ns");
-  static_assert(E != parse_error::unit_order, "iecoop: units of a duration literal must appear once each from highest to lowest (d h m s ms us ns); write \"T#4d13ms\", not \"T#13ms4d\"");
+  static_assert(E != parse_error::expected_digit,
+                "iecoop: the IEC literal has a character where a digit belongs; check the number");
+  static_assert(
+      E != parse_error::misplaced_underscore,
+      "iecoop: '_' may only stand between two digits or between a unit and the next number (\"T#1h_30m\", \"1_000\")");
+  static_assert(E != parse_error::missing_unit,
+                "iecoop: a number in a duration literal has no unit; add d, h, m, s, ms, us or ns");
+  static_assert(E != parse_error::unknown_unit,
+                "iecoop: unknown unit in a duration literal; the units are d, h, m, s, ms, us, ns");
+  static_assert(E != parse_error::unit_order,
+                "iecoop: units of a duration literal must appear once each from highest to lowest (d h m s ms us ns); "
+                "write \"T#4d13ms\", not \"T#13ms4d\"");
   static_assert(E != parse_error::unit_overflow, "iecoop: only the highest unit of a duration literal may overflow");
-  static_assert(E != parse_error::fraction_not_last, "iecoop: only the last unit of a duration literal may have a fraction; write \"T#1s500ms\" or \"T#1.5s\"");
-  static_assert(E != parse_error::too_precise, "iecoop: the literal is finer than its type resolves (TIME: 1 ms); use LTIME# for microseconds and nanoseconds");
-  static_assert(E != parse_error::out_of_range, "iecoop: the literal's value does not fit its type (TIME: up to T#49d17h2m47s295ms); use a wider type such as LTIME or LINT");
-  static_assert(E != parse_error::negative, "iecoop: negative value for an unsigned type (TIME and LTIME are unsigned, as in CODESYS)");
-  static_assert(E != parse_error::invalid_digit, "iecoop: a digit that is not valid in the literal's base (2#: 0-1, 8#: 0-7, 16#: 0-F)");
-  static_assert(E != parse_error::invalid_base, "iecoop: the base of an integer literal must be 2#, 8#, 10# or 16#, without sign");
+  static_assert(
+      E != parse_error::fraction_not_last,
+      "iecoop: only the last unit of a duration literal may have a fraction; write \"T#1s500ms\" or \"T#1.5s\"");
+  static_assert(
+      E != parse_error::too_precise,
+      "iecoop: the literal is finer than its type resolves (TIME: 1 ms); use LTIME# for microseconds and nanoseconds");
+  static_assert(E != parse_error::out_of_range,
+                "iecoop: the literal's value does not fit its type (TIME: up to T#49d17h2m47s295ms); use a wider type "
+                "such as LTIME or LINT");
+  static_assert(E != parse_error::negative,
+                "iecoop: negative value for an unsigned type (TIME and LTIME are unsigned, as in CODESYS)");
+  static_assert(E != parse_error::invalid_digit,
+                "iecoop: a digit that is not valid in the literal's base (2#: 0-1, 8#: 0-7, 16#: 0-F)");
+  static_assert(E != parse_error::invalid_base,
+                "iecoop: the base of an integer literal must be 2#, 8#, 10# or 16#, without sign");
   static_assert(E != parse_error::trailing_characters, "iecoop: unexpected characters after the IEC literal");
 }
 
@@ -55,24 +74,88 @@ consteval parse_error depends_on(parse_error error) noexcept {
 }
 
 /// The types an IEC literal can have, picked by its prefix.
-enum class literal_type { time, ltime, boolean, sint, int_, dint, lint, usint, uint, udint, ulint, byte, word, dword, lword, untyped, unknown };
+enum class literal_type {
+  time,
+  ltime,
+  boolean,
+  sint,
+  int_,
+  dint,
+  lint,
+  usint,
+  uint,
+  udint,
+  ulint,
+  byte,
+  word,
+  dword,
+  lword,
+  untyped,
+  unknown
+};
 
-template <literal_type L> struct literal_cxx_type;
-template <> struct literal_cxx_type<literal_type::time> { using type = TIME; };
-template <> struct literal_cxx_type<literal_type::ltime> { using type = LTIME; };
-template <> struct literal_cxx_type<literal_type::boolean> { using type = BOOL; };
-template <> struct literal_cxx_type<literal_type::sint> { using type = SINT; };
-template <> struct literal_cxx_type<literal_type::int_> { using type = INT; };
-template <> struct literal_cxx_type<literal_type::dint> { using type = DINT; };
-template <> struct literal_cxx_type<literal_type::lint> { using type = LINT; };
-template <> struct literal_cxx_type<literal_type::usint> { using type = USINT; };
-template <> struct literal_cxx_type<literal_type::uint> { using type = UINT; };
-template <> struct literal_cxx_type<literal_type::udint> { using type = UDINT; };
-template <> struct literal_cxx_type<literal_type::ulint> { using type = ULINT; };
-template <> struct literal_cxx_type<literal_type::byte> { using type = BYTE; };
-template <> struct literal_cxx_type<literal_type::word> { using type = WORD; };
-template <> struct literal_cxx_type<literal_type::dword> { using type = DWORD; };
-template <> struct literal_cxx_type<literal_type::lword> { using type = LWORD; };
+template <literal_type L>
+struct literal_cxx_type;
+template <>
+struct literal_cxx_type<literal_type::time> {
+  using type = TIME;
+};
+template <>
+struct literal_cxx_type<literal_type::ltime> {
+  using type = LTIME;
+};
+template <>
+struct literal_cxx_type<literal_type::boolean> {
+  using type = BOOL;
+};
+template <>
+struct literal_cxx_type<literal_type::sint> {
+  using type = SINT;
+};
+template <>
+struct literal_cxx_type<literal_type::int_> {
+  using type = INT;
+};
+template <>
+struct literal_cxx_type<literal_type::dint> {
+  using type = DINT;
+};
+template <>
+struct literal_cxx_type<literal_type::lint> {
+  using type = LINT;
+};
+template <>
+struct literal_cxx_type<literal_type::usint> {
+  using type = USINT;
+};
+template <>
+struct literal_cxx_type<literal_type::uint> {
+  using type = UINT;
+};
+template <>
+struct literal_cxx_type<literal_type::udint> {
+  using type = UDINT;
+};
+template <>
+struct literal_cxx_type<literal_type::ulint> {
+  using type = ULINT;
+};
+template <>
+struct literal_cxx_type<literal_type::byte> {
+  using type = BYTE;
+};
+template <>
+struct literal_cxx_type<literal_type::word> {
+  using type = WORD;
+};
+template <>
+struct literal_cxx_type<literal_type::dword> {
+  using type = DWORD;
+};
+template <>
+struct literal_cxx_type<literal_type::lword> {
+  using type = LWORD;
+};
 
 // The parsers below work on a copy of the literal's characters made inside the constant
 // evaluation: GCC cannot fold pointer checks on the address of a template argument
@@ -90,13 +173,14 @@ struct literal_chars {
 /// unknown for a name that is no integer type.
 template <std::size_t... I>
 constexpr literal_type integer_literal_type(std::string_view prefix, std::index_sequence<I...>) noexcept {
-  constexpr literal_type integers[] = {literal_type::sint,  literal_type::int_,  literal_type::dint, literal_type::lint,
-                                       literal_type::usint, literal_type::uint,  literal_type::udint, literal_type::ulint,
-                                       literal_type::byte,  literal_type::word,  literal_type::dword, literal_type::lword};
+  constexpr literal_type integers[] = {literal_type::sint,  literal_type::int_,  literal_type::dint,
+                                       literal_type::lint,  literal_type::usint, literal_type::uint,
+                                       literal_type::udint, literal_type::ulint, literal_type::byte,
+                                       literal_type::word,  literal_type::dword, literal_type::lword};
   literal_type found = prefix.empty() ? literal_type::untyped : literal_type::unknown;
-  static_cast<void>(((iequals(prefix, iec_name<typename literal_cxx_type<integers[I]>::type>::value) &&
-                      (found = integers[I], true)) ||
-                     ...));
+  static_cast<void>((
+      (iequals(prefix, iec_name<typename literal_cxx_type<integers[I]>::type>::value) && (found = integers[I], true)) ||
+      ...));
   return found;
 }
 
@@ -142,7 +226,8 @@ consteval void duration_unit_overflow() noexcept {
 template <class T, fixed_string S>
 consteval auto normalized_duration_literal() noexcept {
   const literal_chars<S> copy;
-  const auto ns = parse_duration_ns(copy.view(), std::is_same_v<T, LTIME>, std::is_same_v<T, TIME> ? 1'000'000 : 1, true);
+  const auto ns =
+      parse_duration_ns(copy.view(), std::is_same_v<T, LTIME>, std::is_same_v<T, TIME> ? 1'000'000 : 1, true);
   const std::uint64_t ticks = ns.value_or(0) / (std::is_same_v<T, TIME> ? 1'000'000 : 1);
   constant_text<64> text;
   char buffer[64]{};
@@ -172,7 +257,8 @@ constexpr auto operator""_iec() noexcept {
   constexpr detail::literal_type type = detail::classify_literal<S>();
   if constexpr (type == detail::literal_type::untyped) {
     static_assert(detail::dependent_false<decltype(S)>,
-                  "iecoop: an IEC literal needs a type prefix (T#, LTIME#, INT#, WORD#, BOOL#, ...); for an untyped number use a C++ literal such as 0xFF");
+                  "iecoop: an IEC literal needs a type prefix (T#, LTIME#, INT#, WORD#, BOOL#, ...); for an untyped "
+                  "number use a C++ literal such as 0xFF");
     return 0;
   } else if constexpr (type == detail::literal_type::unknown) {
     detail::check_literal<detail::depends_on<S>(parse_error::wrong_prefix)>();
@@ -181,7 +267,8 @@ constexpr auto operator""_iec() noexcept {
     using T = typename detail::literal_cxx_type<type>::type;
     constexpr parse_result<T> result = detail::parse_literal<T, S>();
     if constexpr (result.error() == parse_error::unit_overflow) {
-      detail::duration_unit_overflow<detail::spelled_t<S>, detail::spelled_t<detail::normalized_duration_literal<T, S>()>>();
+      detail::duration_unit_overflow<detail::spelled_t<S>,
+                                     detail::spelled_t<detail::normalized_duration_literal<T, S>()>>();
     } else {
       detail::check_literal<result.error()>();
     }

@@ -32,8 +32,9 @@ struct is_iec_value<iec_string<C, N>> : std::true_type {};
 /// Text of character type C other than an iec_string: string literals, pointers to
 /// NUL-terminated text, std::basic_string, std::basic_string_view.
 template <class S, class C>
-concept string_like = !is_iec_string<std::remove_cvref_t<S>>::value && !std::is_same_v<std::remove_cvref_t<S>, any_field> &&
-                      std::is_convertible_v<const S&, std::basic_string_view<C>>;
+concept string_like =
+    !is_iec_string<std::remove_cvref_t<S>>::value && !std::is_same_v<std::remove_cvref_t<S>, any_field> &&
+    std::is_convertible_v<const S&, std::basic_string_view<C>>;
 }  // namespace detail
 
 /**

@@ -67,7 +67,10 @@ class basic_time {
   template <detail::cpp_integer T>
   consteval basic_time(T ticks) : value_(static_cast<Rep>(ticks)) {  // implicit on purpose
     if (!std::in_range<Rep>(ticks)) {
+      // The compiler shows the call's line, which must hold the whole message.
+      // clang-format off
       detail::compile_error("iecoop: duration constant out of range (TIME and LTIME are unsigned); use a T# literal or a std::chrono duration");
+      // clang-format on
     }
   }
 
@@ -110,8 +113,12 @@ class basic_time {
     return t;
   }
 
-  friend constexpr basic_time operator+(basic_time a, basic_time b) noexcept { return from_ticks(static_cast<Rep>(a.wide() + b.wide())); }
-  friend constexpr basic_time operator-(basic_time a, basic_time b) noexcept { return from_ticks(static_cast<Rep>(a.wide() - b.wide())); }
+  friend constexpr basic_time operator+(basic_time a, basic_time b) noexcept {
+    return from_ticks(static_cast<Rep>(a.wide() + b.wide()));
+  }
+  friend constexpr basic_time operator-(basic_time a, basic_time b) noexcept {
+    return from_ticks(static_cast<Rep>(a.wide() - b.wide()));
+  }
   constexpr basic_time& operator+=(basic_time b) noexcept { return *this = *this + b; }
   constexpr basic_time& operator-=(basic_time b) noexcept { return *this = *this - b; }
 
@@ -119,7 +126,8 @@ class basic_time {
   template <detail::duration_factor N>
   friend constexpr basic_time operator*(basic_time a, N factor) noexcept {
     if constexpr (is_floating<N>()) {
-      return from_ticks(static_cast<Rep>(detail::round_to_int64(static_cast<long double>(a.value_) * as_long_double(factor))));
+      return from_ticks(
+          static_cast<Rep>(detail::round_to_int64(static_cast<long double>(a.value_) * as_long_double(factor))));
     } else {
       return from_ticks(static_cast<Rep>(a.wide() * static_cast<wide_t>(as_int64(factor))));
     }
@@ -160,7 +168,9 @@ class basic_time {
   friend constexpr BOOL operator<=(basic_time a, basic_time b) noexcept { return BOOL(a.value_ <= b.value_); }
   friend constexpr BOOL operator>(basic_time a, basic_time b) noexcept { return BOOL(a.value_ > b.value_); }
   friend constexpr BOOL operator>=(basic_time a, basic_time b) noexcept { return BOOL(a.value_ >= b.value_); }
-  friend constexpr std::strong_ordering operator<=>(basic_time a, basic_time b) noexcept { return a.value_ <=> b.value_; }
+  friend constexpr std::strong_ordering operator<=>(basic_time a, basic_time b) noexcept {
+    return a.value_ <=> b.value_;
+  }
 
  private:
   using wide_t = std::uint64_t;  // arithmetic is done here and truncated: modular, no UB
@@ -213,8 +223,14 @@ using TIME = basic_time<std::uint32_t, std::milli>;
 /// IEC LTIME as CODESYS stores it: unsigned 64-bit nanoseconds.
 using LTIME = basic_time<std::uint64_t, std::nano>;
 
-template <> struct detail::iec_name<TIME> { static constexpr std::string_view value = "TIME"; };
-template <> struct detail::iec_name<LTIME> { static constexpr std::string_view value = "LTIME"; };
+template <>
+struct detail::iec_name<TIME> {
+  static constexpr std::string_view value = "TIME";
+};
+template <>
+struct detail::iec_name<LTIME> {
+  static constexpr std::string_view value = "LTIME";
+};
 
 namespace detail {
 template <class T>
