@@ -1,4 +1,4 @@
-// Firmware example: the seed's INTERFACE I_Math (examples/seeds/i_math_interface.hpp, the same
+// Firmware example: the seed's INTERFACE I_Math (examples/oop/i_math_interface.hpp, the same
 // POUs the host's tests check) on a microcontroller. PROGRAM MAIN points its interface variable
 // at FB_MathMen, then at FB_MethErase, and calls M_Add, M_Mul and the property P_Result through
 // it: virtual calls through an INTERFACE, with no heap and no RTTI.

@@ -1,5 +1,5 @@
 // Firmware example: a function block with a PROPERTY and blocks with METHODs, from the seeds
-// the host's tests check (examples/seeds/prop_ia_plc_prg.hpp and method_doit.hpp).
+// the host's tests check (examples/oop/prop_ia_plc_prg.hpp and method_doit.hpp).
 //
 // PLC_PRG calls FB_A 1,200 times; FB_A's property prop_iA, a Get and a Set accessor around its
 // counter, resets it each time it passes 500. Then FB_DoIt's method DoIt is called with named

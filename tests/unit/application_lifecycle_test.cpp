@@ -1,6 +1,7 @@
 // The application's lifecycle: start (FB_Init), stop (FB_Exit), warm / cold / origin reset,
 // controller restart and new download, with RETAIN and PERSISTENT variables in programs and
-// global variable lists behaving as in the table of semantics.md §1.10, and retained data
+// global variable lists behaving as in the table of docs/retain.md ("What survives which
+// event"), and retained data
 // kept in memory, in a memory_storage or in a file.
 #include "iecoop_test.hpp"
 
@@ -134,7 +135,7 @@ TEST_SUITE("application: start and stop") {
   }
 }
 
-TEST_SUITE("application: resets and RETAIN / PERSISTENT (semantics.md 1.10)") {
+TEST_SUITE("application: resets and RETAIN / PERSISTENT (docs/retain.md, what survives which event)") {
   TEST_CASE("warm reset: VAR initialised, RETAIN and PERSISTENT kept") {
     auto plc = make_plant();
     run_and_change(plc);

@@ -1,5 +1,6 @@
 // TON, TOF, TP and their LTIME forms: each timing diagram as a table of calls, covering the
-// edge cases of semantics.md §2.2 and §2.5 (MatIEC's state machines).
+// edge cases of IEC 61131-3's timing diagrams as MatIEC's state machines implement them
+// (docs/standard-library.md).
 #include "iecoop_test.hpp"
 
 #include <cstdint>

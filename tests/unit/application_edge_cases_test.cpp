@@ -1,4 +1,4 @@
-// Regression tests for defects an independent review of the scheduler found: time arithmetic
+// The application at its edges (each case a defect once found and fixed): time arithmetic
 // near LTIME::max(), outputs written while the instances are constructed, scratch instances
 // holding programs, retained data when the storage fails, small retain memories, the
 // watchdog's product, and event sampling after a cycle ends.
@@ -19,10 +19,10 @@ struct COUNT_PRG : program<COUNT_PRG> {
 };
 
 // A located output with an initial value, written by the constructor (ST: bLamp AT %QX0.0 : BOOL := TRUE;).
-struct review_tag {};
-using review_image = process_image<4, 4, 4, addressing::codesys, review_tag>;
+struct edge_tag {};
+using edge_image = process_image<4, 4, 4, addressing::codesys, edge_tag>;
 struct LAMP_PRG : program<LAMP_PRG> {
-  [[no_unique_address]] located<BOOL, "%QX0.0", review_image> bLamp;
+  [[no_unique_address]] located<BOOL, "%QX0.0", edge_image> bLamp;
   using LOCATED = pins<&LAMP_PRG::bLamp>;
   LAMP_PRG() { bLamp = TRUE; }
   void body() {}
@@ -43,9 +43,9 @@ struct RETAIN_PRG : program<RETAIN_PRG> {
 
 // OUT_PRG sets %QX0.0 in its third cycle; IRQ_PRG is the event task on that output as the
 // field sees it (written when OUT_PRG's cycle ends).
-simulated_io<review_image> field;
+simulated_io<edge_image> field;
 struct OUT_PRG : program<OUT_PRG> {
-  [[no_unique_address]] located<BOOL, "%QX0.1", review_image> bOut;
+  [[no_unique_address]] located<BOOL, "%QX0.1", edge_image> bOut;
   using LOCATED = pins<&OUT_PRG::bOut>;
   var<UDINT> nCalls;
   void body() {
@@ -60,7 +60,7 @@ struct IRQ_PRG : program<IRQ_PRG> {
 
 }  // namespace
 
-TEST_SUITE("application: review regressions") {
+TEST_SUITE("application: edge cases") {
   TEST_CASE("run_for(LTIME::max()) after some time runs on (it stopped at once when now + d wrapped)") {
     application plc{task<COUNT_PRG>{"T", cyclic{"T#1ms"_iec}, 0, watchdog{"T#1ms"_iec}}};
     plc.task(0).model_execution_time([](std::uint64_t n, void*) { return n == 5 ? LTIME(TIME(2)) : LTIME{}; });
@@ -93,8 +93,8 @@ TEST_SUITE("application: review regressions") {
   }
 
   TEST_CASE("outputs written while the instances are constructed reach the field") {
-    application plc{task<LAMP_PRG>{"T", cyclic{"T#1ms"_iec}, 0}, use_image<review_image>{}};
-    simulated_io<review_image> lamp_field;
+    application plc{task<LAMP_PRG>{"T", cyclic{"T#1ms"_iec}, 0}, use_image<edge_image>{}};
+    simulated_io<edge_image> lamp_field;
     plc.connect(lamp_field);
     plc.start();
     plc.run_for(ms(2));
@@ -152,7 +152,7 @@ TEST_SUITE("application: review regressions") {
 
   TEST_CASE("event conditions are sampled again after a cycle ends") {
     application plc{task<OUT_PRG>{"Out", cyclic{"T#10ms"_iec}, 1},
-                    task<IRQ_PRG>{"Irq", event{[] { return field.output<"%QX0.1">(); }}, 0}, use_image<review_image>{}};
+                    task<IRQ_PRG>{"Irq", event{[] { return field.output<"%QX0.1">(); }}, 0}, use_image<edge_image>{}};
     plc.connect(field);
     plc.start();
     plc.run_for(ms(40));

@@ -1,5 +1,6 @@
-// Regressions found in review: wrappers of structures and blocks, => into locals and in-outs,
-// in-out value assignment and relocation, outputs handed on to SUPER, program scratch.
+// Variables at their edges (each case a defect once found and fixed): wrappers of structures
+// and blocks, => into locals and in-outs, in-out value assignment and relocation, outputs
+// handed on to SUPER, program scratch.
 #include "iecoop_test.hpp"
 
 #include <memory>
@@ -82,7 +83,7 @@ struct PRG_Late : program<PRG_Late> {
 
 }  // namespace
 
-TEST_SUITE("review regressions") {
+TEST_SUITE("variables: edge cases") {
   TEST_CASE("var<>, output<> and in_out<> hold structures and blocks") {
     User user;
     INT x = 0;
