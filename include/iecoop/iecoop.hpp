@@ -44,6 +44,7 @@
 // io/: direct addresses, the process image, located variables, I/O drivers (6.5.5)
 #include <iecoop/io/address.hpp>
 #include <iecoop/io/driver.hpp>
+#include <iecoop/io/located.hpp>
 #include <iecoop/io/process_image.hpp>
 
 // runtime/: tasks, the scheduler, the application, RETAIN (6.8)
@@ -51,6 +52,7 @@
 #include <iecoop/runtime/configuration.hpp>
 #include <iecoop/runtime/file_storage.hpp>
 #include <iecoop/runtime/retain.hpp>
+#include <iecoop/runtime/retain_storage.hpp>
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/runtime/task.hpp>
 // IWYU pragma: end_exports

@@ -1,7 +1,7 @@
 // Code-generation checks of located variables (see cmake/check_codegen.cmake): a located
 // variable is one load or store at a link-time constant address, the same code as reading
 // and writing the process image's bytes by hand.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 
 #include <cstdint>
 #include <cstring>

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: hierarchical addresses \(%IW2\.5\.7\.1\) depend on a fieldbus configuration
 // Only flat addresses are supported: hierarchical ones (and %I*) need a device
 // configuration iecoop does not have.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 using namespace iecoop;
 int main() {
 #ifdef IECOOP_COMPILE_FAIL

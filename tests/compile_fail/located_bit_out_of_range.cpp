@@ -1,6 +1,6 @@
 // EXPECT: iecoop: the bit number of a direct address is 0\.\.7
 // A byte has bits 0..7: the bit after %IX0.7 is %IX1.0.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 using namespace iecoop;
 int main() {
 #ifdef IECOOP_COMPILE_FAIL

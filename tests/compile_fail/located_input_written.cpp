@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a %I\.\.\. located variable is an input, written by the I/O driver
 // An input (%I) is written by the I/O driver at the start of each task cycle; the program
 // only reads it. Outputs (%Q) and memory (%M) are assigned like variables.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 using namespace iecoop;
 struct GVL_IO {
   [[no_unique_address]] located<BOOL, "%IX0.5"> bStart;

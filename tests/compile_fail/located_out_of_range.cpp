@@ -1,7 +1,7 @@
 // EXPECT: iecoop: the address lies outside its area of the process image
 // A located variable must lie inside its process image: the default image has 64 input
 // bytes, and in CODESYS addressing %IW40 is bytes 80..81.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 using namespace iecoop;
 int main() {
 #ifdef IECOOP_COMPILE_FAIL

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: two located variables overlap
 // Two located variables listed in LOCATED must not share a bit: %IB0 holds %IX0.5.
 // (Eight BOOLs in one byte are fine.) Read the byte through the image instead.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 using namespace iecoop;
 struct GVL_IO {
   [[no_unique_address]] located<BOOL, "%IX0.5"> bStart;

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a bit address \(%IX, %QX, %MX\) holds a BOOL
 // The variable's type must fit the size of its address: a bit holds a BOOL, a word
 // (%IW) an INT, WORD or UINT.
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 using namespace iecoop;
 int main() {
 #ifdef IECOOP_COMPILE_FAIL

@@ -4,7 +4,7 @@
 #include "iecoop_test.hpp"
 
 #include <iecoop/io/driver.hpp>
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 
 #include <array>
 #include <cstddef>

@@ -5,7 +5,7 @@
 #include "iecoop_test.hpp"
 
 #include <iecoop/io/address.hpp>
-#include <iecoop/io/process_image.hpp>
+#include <iecoop/io/located.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -44,6 +44,8 @@
 #include <iecoop/runtime/configuration.hpp>
 #include <iecoop/runtime/instance_store.hpp>
 #include <iecoop/runtime/retain.hpp>
+#include <iecoop/runtime/retain_image.hpp>
+#include <iecoop/runtime/retain_storage.hpp>
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/runtime/task_cycles.hpp>

@@ -13,6 +13,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/meta.hpp>
+#include <iecoop/io/located.hpp>
 #include <iecoop/io/process_image.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/runtime/task.hpp>

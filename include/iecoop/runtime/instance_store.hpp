@@ -15,7 +15,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/meta.hpp>
-#include <iecoop/runtime/retain.hpp>
+#include <iecoop/runtime/retain_image.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: MIT
+// iecoop/runtime/retain_image.hpp — the byte image in which a runtime keeps the RETAIN and
+// PERSISTENT values of its instances over a reset or a restart: saved from the variables that
+// lie inside each instance, checked (magic, version, checksum, each section's layout hash) and
+// restored into them. See docs/retain.md, "How the values are kept".
+// IWYU pragma: private, include <iecoop/runtime/application.hpp>
+#pragma once
+
+#include <array>
+#include <bit>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+
+#include <iecoop/config.hpp>
+#include <iecoop/fault.hpp>
+#include <iecoop/runtime/retain.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+// ---------------------------------------------------------------------------------------
+// The image
+
+namespace detail {
+
+/// An instance whose remanent variables are saved and restored: a program instance, a
+/// global variable list (a struct of variables), or a single global variable. A remanent
+/// variable belongs to it if its value lies within [base, base + size).
+struct retained_object {
+  const void* base;
+  std::size_t size;
+};
+
+// The image (every number little-endian):
+//   header, 16 bytes:  "IECR", version u16 (1), section count u16, total size u32,
+//                      FNV-1a u32 of the bytes after the header
+//   per section:       kind u8 (1 RETAIN, 2 PERSISTENT), 3 zero bytes, layout hash u32,
+//                      variable count u32, data size u32; then the values, unpadded
+inline constexpr std::size_t retain_image_header_size = 16;
+inline constexpr std::size_t retain_section_header_size = 16;
+inline constexpr std::uint16_t retain_image_version = 1;
+inline constexpr std::array<unsigned char, 4> retain_image_magic{'I', 'E', 'C', 'R'};
+
+inline std::uintptr_t retained_address(const void* pointer) noexcept {
+  return reinterpret_cast<std::uintptr_t>(pointer);
+}
+
+/// Calls f(node, offset) for each remanent variable of `kind` that lies in `object`, in
+/// increasing order of its offset in the object. O(variables) when the variables were
+/// constructed in address order (as C++ constructs members, bases and nested blocks);
+/// otherwise O(variables²), without allocating.
+template <class F>
+void for_each_retained_in(const retained_object& object, retain_kind kind, F&& f) {
+  const std::uintptr_t begin = retained_address(object.base);
+  auto offset_of = [&](const retained_node& node, std::size_t& offset) {
+    if (node.type->kind != kind) return false;
+    const std::uintptr_t at = retained_address(node.value);
+    if (at < begin) return false;
+    offset = static_cast<std::size_t>(at - begin);
+    return offset < object.size && object.size - offset >= node.type->size;
+  };
+  bool sorted = true;
+  bool any = false;
+  std::size_t last = 0;
+  std::size_t offset = 0;
+  for (const retained_node* node = retained_first; node != nullptr && sorted; node = node->next) {
+    if (!offset_of(*node, offset)) continue;
+    if (any && offset <= last) sorted = false;
+    last = offset;
+    any = true;
+  }
+  if (sorted) {
+    for (retained_node* node = retained_first; node != nullptr; node = node->next) {
+      if (offset_of(*node, offset)) f(*node, offset);
+    }
+    return;
+  }
+  // Selection: each round visits the variable with the smallest offset above the last one.
+  bool started = false;
+  std::size_t previous = 0;
+  for (;;) {
+    retained_node* best = nullptr;
+    std::size_t best_offset = 0;
+    for (retained_node* node = retained_first; node != nullptr; node = node->next) {
+      if (!offset_of(*node, offset) || (started && offset <= previous)) continue;
+      if (best == nullptr || offset < best_offset) {
+        best = node;
+        best_offset = offset;
+      }
+    }
+    if (best == nullptr) return;
+    f(*best, best_offset);
+    previous = best_offset;
+    started = true;
+  }
+}
+
+/// The layout of the variables of one kind: what a section's header records.
+struct retained_layout {
+  std::uint32_t hash = 0;
+  std::size_t count = 0;
+  std::size_t data_size = 0;
+};
+
+/// The current layout of the variables of `kind` in `objects`: the hash runs over the byte
+/// order of the machine (values are saved as they are in memory) and, for each variable in
+/// object order and then offset order, the object's index, the offset, the size and the
+/// type's hash.
+inline retained_layout retained_layout_of(std::span<const retained_object> objects, retain_kind kind) {
+  fnv1a hash;
+  hash.add_byte(std::endian::native == std::endian::little ? 1 : 2);
+  retained_layout layout;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    for_each_retained_in(objects[i], kind, [&](const retained_node& node, std::size_t offset) {
+      hash.add_number(i).add_number(offset).add_number(node.type->size).add_number(node.type->type_hash);
+      ++layout.count;
+      layout.data_size += node.type->size;
+    });
+  }
+  layout.hash = hash.value();
+  return layout;
+}
+
+/// The number of remanent variables of `kinds` that lie in `objects`.
+inline std::size_t retained_count(std::span<const retained_object> objects, retain_kinds kinds) {
+  std::size_t count = 0;
+  for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+    if (kinds.contains(kind)) count += retained_layout_of(objects, kind).count;
+  }
+  return count;
+}
+
+inline void retained_put(std::byte* at, std::uint64_t value, int bytes) noexcept {
+  for (int i = 0; i < bytes; ++i) {
+    at[i] = static_cast<std::byte>(value & 0xFFU);
+    value >>= 8U;
+  }
+}
+inline std::uint32_t retained_get(const std::byte* at, int bytes) noexcept {
+  std::uint32_t value = 0;
+  for (int i = bytes - 1; i >= 0; --i) value = (value << 8U) | std::to_integer<std::uint32_t>(at[i]);
+  return value;
+}
+inline std::uint32_t retained_checksum(std::span<const std::byte> bytes) noexcept {
+  fnv1a hash;
+  for (const std::byte b : bytes) hash.add_byte(std::to_integer<std::uint8_t>(b));
+  return hash.value();
+}
+
+/// The number of bytes save_retained writes for `kinds` of the variables in `objects`.
+inline std::size_t retained_image_size(std::span<const retained_object> objects, retain_kinds kinds) {
+  std::size_t size = retain_image_header_size;
+  for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+    if (kinds.contains(kind)) size += retain_section_header_size + retained_layout_of(objects, kind).data_size;
+  }
+  return size;
+}
+
+/**
+ * Writes the values of the remanent variables of `kinds` that lie in `objects` to `out`, as a
+ * self-describing image (a header, then one section per kind in `kinds`, RETAIN first).
+ * Returns the bytes written; if `out` is smaller than retained_image_size(objects, kinds),
+ * reports fault_kind::invalid_value, writes nothing and returns 0.
+ */
+inline std::size_t save_retained(std::span<const retained_object> objects, retain_kinds kinds,
+                                 std::span<std::byte> out) {
+  const std::size_t needed = retained_image_size(objects, kinds);
+  if (out.size() < needed) {
+    fault(fault_kind::invalid_value,
+          "the RETAIN/PERSISTENT image does not fit the buffer; size it with retained_image_size");
+    return 0;
+  }
+  if constexpr (sizeof(std::size_t) > 4) {  // a 32-bit target cannot hold more (and GCC warns the test is always false)
+    if (needed > 0xFFFFFFFFU) {
+      fault(fault_kind::invalid_value, "the RETAIN/PERSISTENT image exceeds 4 GiB");
+      return 0;
+    }
+  }
+  std::size_t position = retain_image_header_size;
+  std::uint64_t sections = 0;
+  for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+    if (!kinds.contains(kind)) continue;
+    const retained_layout layout = retained_layout_of(objects, kind);
+    std::byte* header = out.data() + position;
+    retained_put(header, static_cast<std::uint8_t>(kind), 1);
+    retained_put(header + 1, 0, 3);
+    retained_put(header + 4, layout.hash, 4);
+    retained_put(header + 8, layout.count, 4);
+    retained_put(header + 12, layout.data_size, 4);
+    position += retain_section_header_size;
+    for (const retained_object& object : objects) {
+      for_each_retained_in(object, kind, [&](const retained_node& node, std::size_t) {
+        std::memcpy(out.data() + position, node.value, node.type->size);
+        position += node.type->size;
+      });
+    }
+    ++sections;
+  }
+  std::byte* header = out.data();
+  for (std::size_t i = 0; i < retain_image_magic.size(); ++i) header[i] = static_cast<std::byte>(retain_image_magic[i]);
+  retained_put(header + 4, retain_image_version, 2);
+  retained_put(header + 6, sections, 2);
+  retained_put(header + 8, position, 4);
+  const std::span<const std::byte> body = out.subspan(retain_image_header_size, position - retain_image_header_size);
+  retained_put(header + 12, retained_checksum(body), 4);
+  return position;
+}
+
+/// TRUE if `in` begins with a complete image of a version this iecoop reads, whose
+/// checksum and section structure are intact.
+inline bool valid_retained_image(std::span<const std::byte> in) noexcept {
+  if (in.size() < retain_image_header_size) return false;
+  for (std::size_t i = 0; i < retain_image_magic.size(); ++i) {
+    if (std::to_integer<unsigned char>(in[i]) != retain_image_magic[i]) return false;
+  }
+  if (retained_get(in.data() + 4, 2) != retain_image_version) return false;
+  const std::size_t total = retained_get(in.data() + 8, 4);
+  if (total < retain_image_header_size || total > in.size()) return false;
+  const std::span<const std::byte> body = in.subspan(retain_image_header_size, total - retain_image_header_size);
+  if (retained_get(in.data() + 12, 4) != retained_checksum(body)) return false;
+  const std::size_t sections = retained_get(in.data() + 6, 2);
+  std::size_t position = retain_image_header_size;
+  for (std::size_t s = 0; s < sections; ++s) {
+    if (total - position < retain_section_header_size) return false;
+    const std::uint32_t kind = retained_get(in.data() + position, 1);
+    if (kind != 1 && kind != 2) return false;
+    const std::size_t data_size = retained_get(in.data() + position + 12, 4);
+    if (total - position - retain_section_header_size < data_size) return false;
+    position += retain_section_header_size + data_size;
+  }
+  return position == total;
+}
+
+/**
+ * Copies values from an image save_retained wrote back into the remanent variables of
+ * `objects`, for each section whose kind is in `kinds` and whose layout is the variables'
+ * current layout (same variables, in the same objects, at the same offsets, of the same
+ * sizes and types). A section whose layout differs is skipped, and its variables keep the
+ * values they have (their initial values, after a rebuild). An image that is not intact
+ * (magic, version, size, checksum, structure) restores nothing. Returns the kinds restored.
+ */
+inline retain_kinds restore_retained(std::span<const retained_object> objects, retain_kinds kinds,
+                                     std::span<const std::byte> in) {
+  if (!valid_retained_image(in)) return retain_kinds::none;
+  const std::size_t sections = retained_get(in.data() + 6, 2);
+  retain_kinds restored;
+  std::size_t position = retain_image_header_size;
+  for (std::size_t s = 0; s < sections; ++s) {
+    const std::byte* header = in.data() + position;
+    const auto kind = static_cast<retain_kind>(retained_get(header, 1));
+    const std::uint32_t hash = retained_get(header + 4, 4);
+    const std::size_t count = retained_get(header + 8, 4);
+    const std::size_t data_size = retained_get(header + 12, 4);
+    position += retain_section_header_size;
+    if (kinds.contains(kind) && !restored.contains(kind)) {
+      const retained_layout layout = retained_layout_of(objects, kind);
+      if (layout.hash == hash && layout.count == count && layout.data_size == data_size) {
+        std::size_t at = position;
+        for (const retained_object& object : objects) {
+          for_each_retained_in(object, kind, [&](retained_node& node, std::size_t) {
+            std::memcpy(node.value, in.data() + at, node.type->size);
+            at += node.type->size;
+          });
+        }
+        restored |= kind;
+      }
+    }
+    position += data_size;
+  }
+  return restored;
+}
+
+}  // namespace detail
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>
