@@ -5,15 +5,9 @@
 // IWYU pragma: private, include <iecoop/io/process_image.hpp>
 #pragma once
 
-#include <array>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <span>
-#include <string_view>
 #include <type_traits>
-#include <utility>
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>

@@ -5,15 +5,11 @@
 // IWYU pragma: private, include <iecoop/io/process_image.hpp>
 #pragma once
 
-#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <span>
-#include <string_view>
 #include <type_traits>
-#include <utility>
 
 #include <iecoop/config.hpp>
 #include <iecoop/io/address.hpp>

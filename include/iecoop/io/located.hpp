@@ -17,15 +17,10 @@
 // variables that share a bit.
 #pragma once
 
-#include <array>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <span>
 #include <string_view>
 #include <type_traits>
-#include <utility>
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>

@@ -28,13 +28,8 @@
 #pragma once
 
 #include <array>
-#include <bit>
-#include <concepts>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <initializer_list>
-#include <span>
 #include <type_traits>
 
 #include <iecoop/config.hpp>
