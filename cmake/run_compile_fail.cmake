@@ -9,7 +9,9 @@
 #              diagnostic; `// EXPECT-WITHIN: <n>` in the header comment changes the limit).
 #              With `// EXPECT-ERRORS: <n>`, the output must hold exactly n errors.
 #   MODE=twin: compiling without it must succeed, warnings being errors.
-# Inputs: COMPILER, SOURCE, MODE, FLAGS (a ;-list).
+# Inputs: COMPILER, SOURCE, MODE, FLAGS (a ;-list); optionally PCH_FLAGS (a ;-list), the flags
+# that use a precompiled <iecoop/iecoop.hpp>, added only for a source whose first include is
+# that header (a source that includes a single header must see that header alone).
 cmake_minimum_required(VERSION 3.25)
 
 file(STRINGS "${SOURCE}" first_line LIMIT_COUNT 1)
@@ -30,13 +32,20 @@ foreach(line IN LISTS header_lines)
   endif()
 endforeach()
 
+set(pch "")
+if(PCH_FLAGS)
+  file(STRINGS "${SOURCE}" includes REGEX "^#include " LIMIT_COUNT 1)
+  if(includes STREQUAL "#include <iecoop/iecoop.hpp>")
+    set(pch ${PCH_FLAGS})  # first: its include directory must come before the others
+  endif()
+endif()
 set(defines "")
 if(MODE STREQUAL "fail")
   set(defines -DIECOOP_COMPILE_FAIL)
 endif()
 
 execute_process(
-  COMMAND "${COMPILER}" ${FLAGS} ${defines} -fsyntax-only "${SOURCE}"
+  COMMAND "${COMPILER}" ${pch} ${FLAGS} ${defines} -fsyntax-only "${SOURCE}"
   RESULT_VARIABLE result
   OUTPUT_VARIABLE output
   ERROR_VARIABLE output)
