@@ -113,7 +113,7 @@ struct FB_DolMotor : function_block<FB_DolMotor, implements<I_Motor>> {
   }
   // PROPERTY rSpeed : REAL (Get)
   REAL rSpeed_Get() override {
-    return bContactor ? REAL(100.0f) : REAL(0.0f);  // rSpeed := SEL(bContactor, 0.0, 100.0);
+    return SEL(bContactor, 0.0f, 100.0f);  // rSpeed := SEL(bContactor, 0.0, 100.0);
   }
 };
 
@@ -134,11 +134,11 @@ struct FB_VfdMotor : function_block<FB_VfdMotor, implements<I_Motor>> {
     const REAL rStep = 100.0f * TIME_TO_REAL(tNow - tLast)             // rStep := 100.0 * TIME_TO_REAL(tNow - tLast)
                        / TIME_TO_REAL(tRamp);                          //          / TIME_TO_REAL(tRamp);
     tLast = tNow;                                                      // tLast := tNow;
-    const REAL rTarget = in.bRun ? in.rSetpoint : REAL(0.0f);          // rTarget := SEL(bRun, 0.0, rSetpoint);
+    const REAL rTarget = SEL(in.bRun, 0.0f, in.rSetpoint);             // rTarget := SEL(bRun, 0.0, rSetpoint);
     if (rRamp < rTarget) {                                             // IF rRamp < rTarget THEN
-      rRamp = std::min<REAL>(rRamp + rStep, rTarget);                  //     rRamp := MIN(rRamp + rStep, rTarget);
+      rRamp = MIN(rRamp + rStep, rTarget);                             //     rRamp := MIN(rRamp + rStep, rTarget);
     } else if (rRamp > rTarget) {                                      // ELSIF rRamp > rTarget THEN
-      rRamp = std::max<REAL>(rRamp - rStep, rTarget);                  //     rRamp := MAX(rRamp - rStep, rTarget);
+      rRamp = MAX(rRamp - rStep, rTarget);                             //     rRamp := MAX(rRamp - rStep, rTarget);
     }                                                                  // END_IF
     bEnable = in.bRun | (rRamp > 0.0f);                                // bEnable := bRun OR rRamp > 0.0;  (* until stopped *)
     iSpeedRef = REAL_TO_INT(rRamp * 163.84f);                          // iSpeedRef := REAL_TO_INT(rRamp * 163.84);
@@ -201,8 +201,8 @@ struct FB_Conveyor : function_block<FB_Conveyor> {
 
   // PROPERTY rSpeed : REAL           (* the speed setpoint, % of nominal *)
   REAL rSpeed_Get() { return rSetpoint; }  // Get: rSpeed := rSetpoint;
-  void rSpeed_Set(REAL value) {            // Set: rSetpoint := LIMIT(rMinSpeed, rSpeed, rMaxSpeed);
-    rSetpoint = std::clamp(value, rMinSpeed, rMaxSpeed);
+  void rSpeed_Set(REAL value) {                  // Set:
+    rSetpoint = LIMIT(rMinSpeed, value, rMaxSpeed);  // rSetpoint := LIMIT(rMinSpeed, rSpeed, rMaxSpeed);
   }
   [[no_unique_address]] property<REAL, &FB_Conveyor::rSpeed_Get, &FB_Conveyor::rSpeed_Set> rSpeed{this};
 };

@@ -32,12 +32,17 @@
 #include <iecoop/pou/variables.hpp>
 
 // standard/: the standard functions and function blocks (6.6.2, 6.6.3)
+#include <iecoop/standard/arithmetic_functions.hpp>
 #include <iecoop/standard/bistables.hpp>
+#include <iecoop/standard/bit_functions.hpp>
+#include <iecoop/standard/comparison_functions.hpp>
 #include <iecoop/standard/conversion_functions.hpp>
 #include <iecoop/standard/counters.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
 #include <iecoop/standard/dialect.hpp>
 #include <iecoop/standard/edges.hpp>
+#include <iecoop/standard/numeric_functions.hpp>
+#include <iecoop/standard/selection_functions.hpp>
 #include <iecoop/standard/string_functions.hpp>
 #include <iecoop/standard/timers.hpp>
 

@@ -14,6 +14,8 @@
 #define DELETE (0x00010000L)
 #define ERROR 0
 #define interface struct
+#include <sys/param.h>  // glibc: MIN and MAX as macros
+#define ABS(x) ((x) < 0 ? -(x) : (x))
 
 #include <iecoop/iecoop.hpp>
 #include <iecoop/ostream.hpp>
@@ -21,6 +23,7 @@
 // The user's macros are back after the include.
 static_assert(sizeof(BOOL) == sizeof(int) && sizeof(WORD) == sizeof(unsigned short) && sizeof(INT) == sizeof(long));
 static_assert(TRUE == 1 && FALSE == 0 && DELETE == 0x00010000L && ERROR == 0);
+static_assert(MIN(2, 3) == 2 && MAX(2, 3) == 3 && ABS(-4) == 4);
 interface windows_style_interface {
   int OUT value IN;
 };
@@ -38,6 +41,9 @@ interface windows_style_interface {
 #undef FALSE
 #undef DELETE
 #undef ERROR
+#undef MIN
+#undef MAX
+#undef ABS
 #undef interface
 
 #include "iecoop_test.hpp"
@@ -54,6 +60,8 @@ TEST_CASE("iecoop works in a translation unit that had Windows-style macros") {
   CHECK(i + 1 == 32768);
   CHECK(t == TIME(1000));
   CHECK(s == "SUSI");
+  CHECK(MAX(i, 5) == 32767);  // IEC's MAX, once <sys/param.h>'s macro is gone
+  CHECK(ABS(INT(-3)) == 3);
   windows_style_interface x{5};
   CHECK(x.value == 5);
 }

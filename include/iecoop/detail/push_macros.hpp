@@ -3,9 +3,9 @@
 //
 // Deliberately without include guard: every public iecoop header includes this file after
 // its standard includes and <iecoop/detail/pop_macros.hpp> at its end. <windows.h> and
-// friends define IN, OUT, TRUE, FALSE, DELETE, ERROR, interface, min and max as macros; a
-// user may have defined BOOL or WORD. Inside iecoop's headers they are undefined; after the
-// header the user's definitions are back exactly as they were.
+// friends define IN, OUT, TRUE, FALSE, DELETE, ERROR, interface, min and max as macros,
+// glibc's <sys/param.h> MIN and MAX; a user may have defined BOOL, WORD or ABS. Inside iecoop's headers they are
+// undefined; after the header the user's definitions are back exactly as they were.
 // IWYU pragma: private
 #pragma push_macro("IN")
 #undef IN
@@ -27,6 +27,12 @@
 #undef min
 #pragma push_macro("max")
 #undef max
+#pragma push_macro("MIN")
+#undef MIN
+#pragma push_macro("MAX")
+#undef MAX
+#pragma push_macro("ABS")
+#undef ABS
 #pragma push_macro("BOOL")
 #undef BOOL
 #pragma push_macro("BYTE")
