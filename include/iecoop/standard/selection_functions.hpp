@@ -116,8 +116,8 @@ template <class Mn, class In, class Mx>
 
 /**
  * MUX(K, IN0, IN1, ...): input number K, counting from 0. A K greater than the number of the
- * last input selects the last input, as CODESYS does; so does a negative K (CODESYS compares K
- * unsigned).
+ * last input selects the last input, as CODESYS documents; so does a negative K (CODESYS
+ * documents only K > n; iecoop reads K as an unsigned comparison would).
  */
 template <class K, class In0, class... More>
   requires detail::mux_selector<K>
