@@ -6,7 +6,7 @@
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
 # tests, the compile-fail checks, the header self-containment and -fno-exceptions -fno-rtti
 # checks, the examples, the consumer projects (find_package, add_subdirectory, FetchContent) and
-# iecoop-check's tests (the examples checked clean with it).
+# iecoop-check's tests (the clang build also checks every example clean with it).
 #   3. the firmware examples for Cortex-M3 and Cortex-M4F (CMake presets cortex-m3 and
 #      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
 #      (CTest label `embedded`; see docs/embedded.md).
