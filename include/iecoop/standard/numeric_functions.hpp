@@ -55,17 +55,6 @@ using real_of_t = typename real_of<X>::type;
 template <class X>
 concept numeric_argument = int_value<argument_t<X>> || is_real<argument_t<X>>::value || cpp_number_argument<X>;
 
-/// `op` on IN's value in its REAL type.
-template <class X, class Op>
-real_of_t<X> apply_real(const X& x, Op op) {
-  using R = typename real_of_t<X>::rep;
-  if constexpr (cpp_number_argument<X>) {
-    return real_of_t<X>(static_cast<R>(op(static_cast<R>(x))));
-  } else {
-    return real_of_t<X>(static_cast<R>(op(static_cast<R>(value_of(x).value()))));
-  }
-}
-
 template <class X>
 constexpr auto real_rep_value(const X& x) {
   using R = typename real_of_t<X>::rep;
@@ -74,6 +63,13 @@ constexpr auto real_rep_value(const X& x) {
   } else {
     return static_cast<R>(value_of(x).value());
   }
+}
+
+/// `op` on IN's value in its REAL type.
+template <class X, class Op>
+real_of_t<X> apply_real(const X& x, Op op) {
+  using R = typename real_of_t<X>::rep;
+  return real_of_t<X>(static_cast<R>(op(real_rep_value(x))));
 }
 
 }  // namespace detail
