@@ -199,7 +199,8 @@ TEST_SUITE("standard functions: numerical") {
     static_assert(std::is_same_v<decltype(SQRT(LREAL(2.0))), LREAL>);
     static_assert(std::is_same_v<decltype(SQRT(INT(16))), REAL>);
     static_assert(std::is_same_v<decltype(SQRT(DINT(16))), LREAL>);
-    static_assert(std::is_same_v<decltype(EXPT(REAL(2.0f), 10)), REAL>);
+    static_assert(std::is_same_v<decltype(EXPT(REAL(2.0f), 10)), LREAL>);         // always LREAL, as TwinCAT documents
+    static_assert(!std::is_convertible_v<decltype(EXPT(REAL(2.0f), 10)), REAL>);  // into a REAL: LREAL_TO_REAL
     CHECK(SQRT(INT(16)) == 4.0f);
     CHECK(SQRT(opaque(LREAL(2.0))) == doctest::Approx(std::numbers::sqrt2));
     CHECK(LN(LREAL(std::numbers::e)) == doctest::Approx(1.0));
@@ -238,7 +239,8 @@ TEST_SUITE("standard functions: numerical") {
     CHECK(std::isnan(EXPT(LREAL(-8.0), 1.0 / 3.0).value()));
     CHECK(std::isinf(EXPT(opaque(LREAL(0.0)), -1).value()));
     CHECK(EXPT(LREAL(std::nan("")), 0) == 1.0);
-    CHECK(EXPT(INT(3), 2) == 9.0f);
+    CHECK(EXPT(INT(3), 2) == 9.0);
+    CHECK(EXPT(REAL(1.1f), 10) == std::pow(static_cast<double>(1.1f), 10.0));  // computed in LREAL
   }
 }
 

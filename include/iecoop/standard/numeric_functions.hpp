@@ -3,14 +3,14 @@
 // SQRT, LN, LOG, EXP, SIN, COS, TAN, ASIN, ACOS, ATAN, ATAN2 and EXPT for ANY_REAL.
 //
 //     rDist := SQRT(rX * rX + rY * rY);      rDist = SQRT(rX * rX + rY * rY);
-//     rArea := EXPT(rRadius, 2) * 3.14159;    rArea = EXPT(rRadius, 2) * 3.14159f;
+//     lrArea := EXPT(rRadius, 2) * 3.14159;   lrArea = EXPT(rRadius, 2) * 3.14159;
 //     iDelta := ABS(iA - iB);                 iDelta = ABS(iA - iB);
 //
 // - ABS of an integer is computed in the register, as `-i` is: ABS(INT#-32768) is 32768 there,
 //   and -32768 once assigned to an INT (IEC integer arithmetic wraps). ABS is constexpr.
-// - The REAL functions return the type of their input (REAL or LREAL). An integer input is
-//   taken as the REAL type it converts to implicitly (INT as REAL, DINT as LREAL), as CODESYS
-//   accepts ANY_NUM there. Angles are in radians; LOG is base 10.
+// - The REAL functions return the type of their input (REAL or LREAL), EXPT always an LREAL.
+//   An integer input is taken as the REAL type it converts to implicitly (INT as REAL, DINT as
+//   LREAL), as CODESYS accepts ANY_NUM there. Angles are in radians; LOG is base 10.
 // - Outside a function's domain the result is IEEE 754's, as CODESYS computes on its targets:
 //   SQRT(-1.0) and LN(-1.0) are NaN, LN(0.0) is minus infinity, ASIN(2.0) is NaN, EXPT of a
 //   negative base to a non-integer power is NaN, EXPT(0.0, -1) is infinity. Check with
@@ -176,16 +176,17 @@ template <class Y, class X>
 }
 
 /**
- * EXPT(IN1, IN2): IN1 to the power IN2, of IN1's REAL type. IN2 is any number; a negative base
- * to a whole power is exact in sign (EXPT(-2.0, 3) is -8.0), to a fractional power NaN;
- * EXPT(0.0, -1) is infinity; EXPT(x, 0) is 1.0, even for a NaN x.
+ * EXPT(IN1, IN2): IN1 to the power IN2, an LREAL whatever the inputs' types, as TwinCAT documents
+ * for its CODESYS-based compiler ("return type is always LREAL"; assigning it to a REAL needs
+ * LREAL_TO_REAL, where TwinCAT warns). Both inputs are any numbers; a negative base to a whole
+ * power is exact in sign (EXPT(-2.0, 3) is -8.0), to a fractional power NaN; EXPT(0.0, -1) is
+ * infinity; EXPT(x, 0) is 1.0, even for a NaN x.
  */
 template <class In1, class In2>
   requires(detail::numeric_argument<In1> && detail::numeric_argument<In2>)
-[[nodiscard]] inline detail::real_of_t<In1> EXPT(const In1& in1, const In2& in2) {
-  using R = typename detail::real_of_t<In1>::rep;
-  return detail::real_of_t<In1>(
-      static_cast<R>(std::pow(static_cast<R>(detail::real_rep_value(in1)), detail::real_rep_value(in2))));
+[[nodiscard]] inline LREAL EXPT(const In1& in1, const In2& in2) {
+  return LREAL(
+      std::pow(static_cast<double>(detail::real_rep_value(in1)), static_cast<double>(detail::real_rep_value(in2))));
 }
 
 }  // namespace iecoop
