@@ -32,6 +32,9 @@ enum class fault_kind : std::uint8_t {
   duplicate_program,     ///< a second instance of a PROGRAM while the first one lives
   duplicate_globals,     ///< a second instance of a global variable list while the first one lives
   property_layout,       ///< a PROPERTY member not at its block's address (not [[no_unique_address]])
+  array_bounds,          ///< an ARRAY index outside its bounds (CODESYS: CheckBounds)
+  out_of_range,          ///< a value outside its subrange type (CODESYS: CheckRangeSigned/Unsigned)
+  null_pointer,          ///< a dereferenced null POINTER or invalid REFERENCE (CODESYS: CheckPointer)
 };
 
 /// A fault as the handler sees it. `message` points to a string literal.
@@ -56,6 +59,9 @@ using fault_handler = void (*)(const fault_info&);
     case fault_kind::duplicate_program: return "second PROGRAM instance";
     case fault_kind::duplicate_globals: return "second instance of a global variable list";
     case fault_kind::property_layout: return "property not at its block's address";
+    case fault_kind::array_bounds: return "array index out of bounds";
+    case fault_kind::out_of_range: return "value out of subrange";
+    case fault_kind::null_pointer: return "null pointer dereferenced";
   }
   return "unknown fault";
 }

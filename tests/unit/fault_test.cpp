@@ -50,5 +50,8 @@ TEST_SUITE("fault path") {
     CHECK(std::string_view(to_string(fault_kind::unassigned_interface)) == "call through unassigned interface");
     CHECK(std::string_view(to_string(fault_kind::watchdog)) == "watchdog");
     CHECK(std::string_view(to_string(fault_kind::user)) == "user fault");
+    CHECK(std::string_view(to_string(fault_kind::array_bounds)) == "array index out of bounds");
+    CHECK(std::string_view(to_string(fault_kind::out_of_range)) == "value out of subrange");
+    CHECK(std::string_view(to_string(fault_kind::null_pointer)) == "null pointer dereferenced");
   }
 }
