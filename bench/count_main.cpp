@@ -112,6 +112,16 @@ const kernel all_kernels[] = {
          (void)interface_direct(*p);
        }
      }},
+    {"array_index_checked",
+     [](std::uint64_t n) { repeat<ring<array_check::bounds>>(n, array_index_iecoop<array_check::bounds>); }},
+    {"array_index_unchecked",
+     [](std::uint64_t n) { repeat<ring<array_check::none>>(n, array_index_iecoop<array_check::none>); }},
+    {"array_index_handwritten", [](std::uint64_t n) { repeat<plain_ring>(n, array_index_handwritten); }},
+    {"array_loop_checked",
+     [](std::uint64_t n) { repeat<ring<array_check::bounds>>(n, array_loop_iecoop<array_check::bounds>); }},
+    {"array_loop_unchecked",
+     [](std::uint64_t n) { repeat<ring<array_check::none>>(n, array_loop_iecoop<array_check::none>); }},
+    {"array_loop_handwritten", [](std::uint64_t n) { repeat<plain_ring>(n, array_loop_handwritten); }},
     {"task_cycle_1", task_cycles<1>},
     {"task_cycle_8", task_cycles<8>},
     {"task_cycle_32", task_cycles<32>},

@@ -129,4 +129,40 @@ inline REAL interface_iecoop(const itf<I_Math>& ip) { return ip->M_Add(1.5f); }
 inline float interface_virtual(plain_math_base& b) { return b.add(1.5f); }
 inline float interface_direct(plain_math& m) { return m.add_direct(1.5f); }
 
+// --- ARRAY with and without CheckBounds vs a C array --------------------------------------
+
+// VAR aValues : ARRAY[1..64] OF DINT; iNext : DINT := 1; diSum : DINT; END_VAR
+template <array_check Check>
+struct ring {
+  basic_array<Check, DINT, 1, 64> aValues;
+  DINT iNext = 1;
+  DINT diSum;
+};
+struct plain_ring {
+  std::int32_t aValues[64]{};
+  std::int32_t iNext = 1;
+  std::int32_t diSum = 0;
+};
+// aValues[iNext] := aValues[iNext] + 1;  iNext := iNext MOD 64 + 1;   (an index from a variable)
+template <array_check Check>
+inline void array_index_iecoop(ring<Check>& r) {
+  r.aValues[r.iNext] = r.aValues[r.iNext] + 1;
+  r.iNext = r.iNext % 64 + 1;
+}
+inline void array_index_handwritten(plain_ring& r) {
+  r.aValues[r.iNext - 1] = r.aValues[r.iNext - 1] + 1;
+  r.iNext = r.iNext % 64 + 1;
+}
+// diSum := 0;  FOR i := 1 TO 64 DO diSum := diSum + aValues[i]; END_FOR   (bounds the compiler knows)
+template <array_check Check>
+inline void array_loop_iecoop(ring<Check>& r) {
+  r.diSum = 0;
+  for (DINT i = 1; i <= 64; i = i + 1) r.diSum = r.diSum + r.aValues[i];
+}
+inline void array_loop_handwritten(plain_ring& r) {
+  std::uint32_t sum = 0;  // wrapping, as DINT's sum
+  for (int i = 1; i <= 64; ++i) sum += static_cast<std::uint32_t>(r.aValues[i - 1]);
+  r.diSum = static_cast<std::int32_t>(sum);
+}
+
 }  // namespace kernels

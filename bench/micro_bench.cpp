@@ -109,3 +109,21 @@ BENCHMARK(BM_Interface_virtual);
 BENCHMARK(BM_Interface_direct);
 
 }  // namespace
+
+// The index comes from memory each iteration: the check stays in the loop.
+template <class Object, void (*Step)(Object&)>
+void BM_Array(benchmark::State& state) {
+  Object r;
+  benchmark::DoNotOptimize(&r);  // in memory, as a block instance is
+  for (auto _ : state) {
+    Step(r);
+    benchmark::ClobberMemory();
+  }
+  benchmark::DoNotOptimize(r.iNext);
+}
+BENCHMARK(BM_Array<ring<array_check::bounds>, array_index_iecoop<array_check::bounds>>)->Name("BM_ArrayIndex_checked");
+BENCHMARK(BM_Array<ring<array_check::none>, array_index_iecoop<array_check::none>>)->Name("BM_ArrayIndex_unchecked");
+BENCHMARK(BM_Array<plain_ring, array_index_handwritten>)->Name("BM_ArrayIndex_handwritten");
+BENCHMARK(BM_Array<ring<array_check::bounds>, array_loop_iecoop<array_check::bounds>>)->Name("BM_ArrayLoop_checked");
+BENCHMARK(BM_Array<ring<array_check::none>, array_loop_iecoop<array_check::none>>)->Name("BM_ArrayLoop_unchecked");
+BENCHMARK(BM_Array<plain_ring, array_loop_handwritten>)->Name("BM_ArrayLoop_handwritten");

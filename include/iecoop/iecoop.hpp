@@ -10,6 +10,7 @@
 #include <iecoop/fault.hpp>
 
 // types/: the elementary data types, their literals and conversions (IEC 61131-3 6.3, 6.4)
+#include <iecoop/types/array.hpp>
 #include <iecoop/types/bit_access.hpp>
 #include <iecoop/types/convert.hpp>
 #include <iecoop/types/elementary.hpp>

@@ -1,9 +1,7 @@
-// EXPECT: a RETAIN or PERSISTENT array is written retain<std::array<T, N>>
-// ST's `VAR RETAIN aValues : ARRAY[0..2] OF INT; END_VAR` is a retain<std::array<INT, 3>>.
+// EXPECT: a RETAIN or PERSISTENT array is written retain<ARRAY<T, 1, N>>
+// ST's `VAR RETAIN aValues : ARRAY[0..2] OF INT; END_VAR` is a retain<ARRAY<INT, 0, 2>>.
 #include <iecoop/iecoop.hpp>
 #include <iecoop/runtime/retain.hpp>
-
-#include <array>
 
 using namespace iecoop;
 
@@ -11,7 +9,8 @@ int main() {
 #ifdef IECOOP_COMPILE_FAIL
   retain<INT[3]> aValues;
 #else
-  retain<std::array<INT, 3>> aValues;
+  retain<ARRAY<INT, 0, 2>> aValues;
+  aValues[2] = 5;
 #endif
-  return aValues->size() == 3 ? 0 : 1;
+  return UPPER_BOUND(aValues, 1) == 2 ? 0 : 1;
 }

@@ -256,6 +256,10 @@ TEST_SUITE("retain") {
     static_assert(detail::type_hash<STRING<10>> == detail::fnv1a().add("STRING(10)").value());
     static_assert(detail::type_hash<WSTRING<10>> == detail::fnv1a().add("WSTRING(10)").value());
     static_assert(detail::type_hash<std::array<INT, 3>> == detail::fnv1a().add("ARRAY[3] OF INT").value());
+    static_assert(detail::type_hash<ARRAY<INT, 1, 3>> == detail::fnv1a().add("ARRAY[1..3] OF INT").value());
+    static_assert(detail::type_hash<ARRAY<INT, -1, 1, 0, 2>> ==
+                  detail::fnv1a().add("ARRAY[-1..1,0..2] OF INT").value());
+    static_assert(detail::type_hash<ARRAY<INT, 0, 2>> != detail::type_hash<ARRAY<INT, 1, 3>>);
     static_assert(detail::type_hash<INT> != detail::type_hash<UINT>);
     static_assert(detail::type_hash<INT> != detail::type_hash<WORD>);
     static_assert(detail::type_hash<STRING<10>> != detail::type_hash<STRING<11>>);

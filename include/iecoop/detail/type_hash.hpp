@@ -98,6 +98,12 @@ struct iec_string_traits<iec_string<C, N>> {
   static constexpr std::size_t capacity = N;
 };
 
+/// Feeds a signed decimal number to `hash`.
+constexpr fnv1a& add_signed(fnv1a& hash, std::int64_t value) noexcept {
+  if (value < 0) hash.add("-");
+  return hash.add_decimal(value < 0 ? 0U - static_cast<std::uint64_t>(value) : static_cast<std::uint64_t>(value));
+}
+
 /// Feeds T's name to `hash`: the IEC name where T has one, else the compiler's spelling.
 template <class T>
 constexpr void add_type_name(fnv1a& hash) noexcept {
@@ -109,6 +115,15 @@ constexpr void add_type_name(fnv1a& hash) noexcept {
   } else if constexpr (std::is_array_v<U>) {
     hash.add("ARRAY[").add_decimal(std::extent_v<U>).add("] OF ");
     add_type_name<std::remove_extent_t<U>>(hash);
+  } else if constexpr (requires { typename U::iecoop_array; }) {
+    hash.add("ARRAY[");  // with the IEC bounds: ARRAY[0..9] is another type than ARRAY[1..10]
+    for (std::size_t d = 1; d <= U::rank; ++d) {
+      if (d > 1) hash.add(",");
+      add_signed(hash, U::lower(d)).add("..");
+      add_signed(hash, U::upper(d));
+    }
+    hash.add("] OF ");
+    add_type_name<typename U::value_type>(hash);
   } else if constexpr (is_std_array<U>::value) {
     hash.add("ARRAY[").add_decimal(std::tuple_size_v<U>).add("] OF ");
     add_type_name<typename U::value_type>(hash);

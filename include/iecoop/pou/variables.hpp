@@ -20,6 +20,7 @@
 #include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/array.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
@@ -114,6 +115,26 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
     requires(Open && requires(T& v) { v[std::forward<I>(index)]; })
   {
     return value_[std::forward<I>(index)];
+  }
+  /// An element `a[i, j]` of a multi-dimensional ARRAY: `a(i, j)`.
+  template <class... I>
+  constexpr decltype(auto) operator()(const I&... index) const
+    requires requires(const T& v) {
+      typename T::iecoop_array;
+      v(index...);
+    }
+  {
+    return value_(index...);
+  }
+  template <class... I>
+  constexpr decltype(auto) operator()(const I&... index)
+    requires(Open &&
+             requires(T& v) {
+               typename T::iecoop_array;
+               v(index...);
+             })
+  {
+    return value_(index...);
   }
   /// The variable itself: for members of a structured variable (`pos.ref().x = 1;`) and to
   /// bind a VAR_IN_OUT to it.
@@ -302,6 +323,16 @@ class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_
   {
     return get()[std::forward<I>(index)];
   }
+  /// An element `a[i, j]` of a multi-dimensional ARRAY: `a(i, j)`.
+  template <class... I>
+  constexpr decltype(auto) operator()(const I&... index) const
+    requires requires(T& v) {
+      typename value_type::iecoop_array;
+      v(index...);
+    }
+  {
+    return get()(index...);
+  }
 
   /// Writes through to the bound variable (a non-template operand, so that constants
   /// convert as in any assignment).
@@ -350,6 +381,131 @@ class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_
 
   T* target_ = nullptr;
 };
+
+/**
+ * A VAR_IN_OUT `ARRAY[*] OF T` (one `'*'` per dimension, `ARRAY[*, *]` is ARRAY<T, '*', '*'>):
+ * binds to an ARRAY of any bounds with that many dimensions and element type, and takes its
+ * bounds with it — LOWER_BOUND and UPPER_BOUND read them, indices are checked against them.
+ * A FUNCTION with positional parameters takes one directly: `SUM(in_out<ARRAY<INT, '*'>> a)`
+ * is called `SUM(aValues)`.
+ */
+template <array_check Check, class T, auto... Stars>
+  requires detail::array_shape<Stars...>::star
+class in_out<basic_array<Check, T, Stars...>> {
+  static constexpr std::size_t rank_ = sizeof...(Stars);
+  template <array_check C, auto... B>
+  static constexpr bool fits = detail::array_shape<B...>::rank == rank_ && !detail::array_shape<B...>::star;
+
+ public:
+  using value_type = T;
+  static constexpr std::size_t rank = rank_;
+
+  constexpr in_out() noexcept = default;
+  /// Bound to `array` (implicit, so that a function's ARRAY[*] parameter takes an ARRAY).
+  template <array_check C, auto... B>
+    requires fits<C, B...>
+  constexpr in_out(basic_array<C, T, B...>& array) noexcept {  // implicit: a parameter takes its ARRAY
+    bind(array);
+  }
+  /// Bound to `array` (ST: the in-out's argument in the call).
+  template <array_check C, auto... B>
+    requires fits<C, B...>
+  constexpr void bind(basic_array<C, T, B...>& array) noexcept {
+    elements_ = array.data();
+    for (std::size_t d = 0; d < rank_; ++d) {
+      lower_[d] = array.lower(d + 1);
+      extent_[d] = array.upper(d + 1) - array.lower(d + 1) + 1;
+    }
+  }
+  /// Bound to the ARRAY inside a variable wrapper or another in-out.
+  template <class W>
+    requires requires(W& w) { w.ref(); }
+  constexpr void bind(W& wrapper) noexcept {
+    bind(wrapper.ref());
+  }
+  constexpr void bind(const in_out& other) noexcept { *this = other; }
+  template <array_check C, auto... B>
+    requires fits<C, B...>
+  constexpr void bind(const in_out<basic_array<C, T, B...>>& other) {
+    bind(other.get());
+  }
+  /// TRUE once bound (ST: __ISVALIDREF).
+  [[nodiscard]] constexpr bool bound() const noexcept { return elements_ != nullptr; }
+
+  /// The lower bound of dimension `d` (from 1); see LOWER_BOUND.
+  [[nodiscard]] constexpr detail::array_index lower(std::size_t d) const noexcept { return lower_[d - 1]; }
+  /// The upper bound of dimension `d` (from 1); see UPPER_BOUND.
+  [[nodiscard]] constexpr detail::array_index upper(std::size_t d) const noexcept {
+    return lower_[d - 1] + extent_[d - 1] - 1;
+  }
+  /// The number of elements.
+  [[nodiscard]] constexpr std::size_t size() const noexcept {
+    std::size_t n = elements_ != nullptr ? 1 : 0;
+    for (std::size_t d = 0; d < rank_; ++d) n *= static_cast<std::size_t>(extent_[d]);
+    return n;
+  }
+
+  /// A one-dimensional ARRAY's element `a[i]`.
+  template <class I>
+    requires(rank_ == 1)
+  [[nodiscard]] constexpr T& operator[](const I& index) const {
+    return (*this)(index);
+  }
+  /// The element `a[i, j, ...]` of ST: one index per dimension.
+  template <class... I>
+  [[nodiscard]] constexpr T& operator()(const I&... index) const {
+    static_assert(sizeof...(I) == rank_, "iecoop: index an ARRAY with one index per dimension, a(i, j) for a[i, j]");
+    (detail::check_index_type<I>(), ...);
+    if (elements_ == nullptr) return unbound();
+    std::size_t offset = 0;
+    std::size_t d = 0;
+    ((offset = offset * static_cast<std::size_t>(extent_[d]) +
+               detail::offset_in<Check>(detail::index_value(index), lower_[d], extent_[d]),
+      ++d),
+     ...);
+    return elements_[offset];
+  }
+  /// The elements in memory order, for range-for.
+  [[nodiscard]] constexpr T* begin() const noexcept { return elements_; }
+  [[nodiscard]] constexpr T* end() const noexcept { return elements_ + size(); }
+
+ private:
+  static T& unbound() {
+    fault(fault_kind::unbound_in_out, "VAR_IN_OUT ARRAY[*] used before it was bound to an ARRAY");
+    static T scratch{};
+    scratch = T{};
+    return scratch;
+  }
+
+  T* elements_ = nullptr;
+  detail::array_index lower_[rank_]{};
+  detail::array_index extent_[rank_]{};
+};
+
+/// ST's `LOWER_BOUND(a, dim)` of an ARRAY[*] in-out: its bound at run time, a DINT.
+template <array_check Check, class T, auto... Stars>
+[[nodiscard]] constexpr DINT LOWER_BOUND(const in_out<basic_array<Check, T, Stars...>>& a,
+                                         std::type_identity_t<array_dimension<sizeof...(Stars)>> dim) noexcept {
+  return DINT(static_cast<std::int32_t>(a.lower(dim.value)));
+}
+/// ST's `UPPER_BOUND(a, dim)` of an ARRAY[*] in-out: its bound at run time, a DINT.
+template <array_check Check, class T, auto... Stars>
+[[nodiscard]] constexpr DINT UPPER_BOUND(const in_out<basic_array<Check, T, Stars...>>& a,
+                                         std::type_identity_t<array_dimension<sizeof...(Stars)>> dim) noexcept {
+  return DINT(static_cast<std::int32_t>(a.upper(dim.value)));
+}
+
+/// LOWER_BOUND and UPPER_BOUND of an ARRAY held by a variable wrapper (var<>, in_out<>, retain<>, ...).
+template <detail::value_wrapper W>
+  requires requires { typename detail::unwrapped_t<W>::iecoop_array; }
+[[nodiscard]] constexpr DINT LOWER_BOUND(const W&, array_dimension<detail::unwrapped_t<W>::rank> dim) noexcept {
+  return DINT(static_cast<std::int32_t>(detail::unwrapped_t<W>::lower(dim.value)));
+}
+template <detail::value_wrapper W>
+  requires requires { typename detail::unwrapped_t<W>::iecoop_array; }
+[[nodiscard]] constexpr DINT UPPER_BOUND(const W&, array_dimension<detail::unwrapped_t<W>::rank> dim) noexcept {
+  return DINT(static_cast<std::int32_t>(detail::unwrapped_t<W>::upper(dim.value)));
+}
 
 /**
  * A VAR_OUTPUT of a METHOD or FUNCTION. It starts each call at its declared initial value,

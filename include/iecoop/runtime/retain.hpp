@@ -184,9 +184,9 @@ template <class Derived, class T, retain_kind Kind>
 class retained_variable : public assignable_variable<Derived, T> {
   static_assert(std::is_trivially_copyable_v<T>,
                 "iecoop: a RETAIN or PERSISTENT variable must be trivially copyable, as it is saved and restored "
-                "as bytes; use IEC elementary types, STRING<n>, std::array and STRUCTs of them");
+                "as bytes; use IEC elementary types, STRING<n>, ARRAY<T, l, u> and STRUCTs of them");
   static_assert(!std::is_array_v<T>,
-                "iecoop: a RETAIN or PERSISTENT array is written retain<std::array<T, N>>, not retain<T[N]>");
+                "iecoop: a RETAIN or PERSISTENT array is written retain<ARRAY<T, 1, N>>, not retain<T[N]>");
   static_assert(
       !std::is_const_v<T> && !std::is_volatile_v<T>,
       "iecoop: a RETAIN or PERSISTENT variable is written when its value is restored; drop const or volatile");
