@@ -16,7 +16,9 @@
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/literals.hpp>
+#include <iecoop/types/pointer.hpp>
 #include <iecoop/types/string.hpp>
+#include <iecoop/types/subrange.hpp>
 #include <iecoop/types/time.hpp>
 
 // pou/: program organisation units and the object-oriented extensions (6.5, 6.6)
@@ -31,6 +33,7 @@
 #include <iecoop/pou/named_arguments.hpp>
 #include <iecoop/pou/program.hpp>
 #include <iecoop/pou/property.hpp>
+#include <iecoop/pou/reference.hpp>
 #include <iecoop/pou/variables.hpp>
 
 // standard/: the standard functions and function blocks (6.6.2, 6.6.3)

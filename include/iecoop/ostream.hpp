@@ -14,6 +14,7 @@
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
+#include <iecoop/types/subrange.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -69,6 +70,12 @@ std::ostream& operator<<(std::ostream& os, const iec_string<char16_t, N>& value)
     os.write(utf8, end - utf8);
   }
   return os;
+}
+
+/// A subrange prints its value.
+template <class Base, auto Lower, auto Upper>
+std::ostream& operator<<(std::ostream& os, const subrange<Base, Lower, Upper>& value) {
+  return os << value.get();
 }
 
 template <class T, class Owner>

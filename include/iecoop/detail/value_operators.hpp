@@ -72,9 +72,12 @@ concept wrapper_operands = (value_wrapper<A> || value_wrapper<B>)&&wrapper_partn
 
 // A wrapped integer with a C++ number (`count + 1`) is left to the integer's own operators,
 // which check the constant while compiling (the wrapper converts to the integer for them).
+// (A wrapper of a wrapper of an integer — a var<> of a subrange — counts too.)
+template <class X>
+concept wrapped_integer =
+    AnyInteger<unwrapped_t<X>> || (value_wrapper<unwrapped_t<X>> && AnyInteger<unwrapped_t<unwrapped_t<X>>>);
 template <class X, class Y>
-concept wrapped_integer_with_number =
-    value_wrapper<X> && AnyInteger<unwrapped_t<X>> && cpp_integer<std::remove_cvref_t<Y>>;
+concept wrapped_integer_with_number = value_wrapper<X> && wrapped_integer<X> && cpp_integer<std::remove_cvref_t<Y>>;
 template <class A, class B>
 concept wrapper_arithmetic =
     wrapper_operands<A, B> && !wrapped_integer_with_number<A, B> && !wrapped_integer_with_number<B, A>;

@@ -191,6 +191,8 @@ constexpr void assign_argument(Target& target, V&& value) {
     // A variable wrapper (a block's var<>, a retain<>, ...) passes its value, which converts
     // as a plain variable of its type would (a var<INT> into a DINT input).
     assign_argument(target, detail::value_of(std::forward<V>(value)));
+  } else if constexpr (requires { typename Target::iecoop_subrange; } && detail::cpp_integer<std::remove_cvref_t<V>>) {
+    target.assign_checked(value);  // a subrange's CheckRange, when it runs
   } else if constexpr (detail::checked_integer_argument<Target, V>) {
     using rep = typename Target::rep;
     if (!std::in_range<rep>(value)) {
