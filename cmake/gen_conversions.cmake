@@ -10,7 +10,28 @@ if(NOT DEFINED OUTPUT AND NOT DEFINED CHECK)
   message(FATAL_ERROR "usage: cmake -DOUTPUT=<file> | -DCHECK=<file> -P gen_conversions.cmake")
 endif()
 
-set(types BOOL BYTE WORD DWORD LWORD SINT INT DINT LINT USINT UINT UDINT ULINT REAL LREAL TIME LTIME STRING WSTRING)
+set(types BOOL BYTE WORD DWORD LWORD SINT INT DINT LINT USINT UINT UDINT ULINT REAL LREAL TIME LTIME DATE LDATE TOD LTOD DT
+          LDT STRING WSTRING)
+set(durations TIME LTIME)
+set(points DATE LDATE TOD LTOD DT LDT)
+set(times_of_day TOD LTOD)
+set(dates DATE LDATE)
+
+# Whether <from>_TO_<to> exists: not between a duration and a point in time, nor from a TOD or
+# into one from a date (CODESYS documents no meaning for those), as convert<> rejects them.
+function(converts from to out)
+  set(result TRUE)
+  if((from IN_LIST durations AND to IN_LIST points) OR (from IN_LIST points AND to IN_LIST durations))
+    set(result FALSE)
+  elseif(from IN_LIST times_of_day AND to IN_LIST points AND NOT to IN_LIST times_of_day)
+    set(result FALSE)
+  elseif(to IN_LIST times_of_day AND from IN_LIST dates)
+    set(result FALSE)
+  elseif(to IN_LIST dates AND from IN_LIST times_of_day)
+    set(result FALSE)
+  endif()
+  set(${out} ${result} PARENT_SCOPE)
+endfunction()
 
 function(cxx_type name out)
   if(name STREQUAL "STRING" OR name STREQUAL "WSTRING")
@@ -30,6 +51,7 @@ set(text "// SPDX-License-Identifier: MIT
 #pragma once
 
 #include <iecoop/types/convert.hpp>
+#include <iecoop/types/date_time.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -43,7 +65,8 @@ foreach(from IN LISTS types)
   cxx_type(${from} from_cxx)
   string(APPEND text "\n// ${from}_TO_*\n")
   foreach(to IN LISTS types)
-    if(NOT from STREQUAL to)
+    converts(${from} ${to} ok)
+    if(NOT from STREQUAL to AND ok)
       cxx_type(${to} to_cxx)
       string(APPEND text "inline constexpr conversion<${from_cxx}, ${to_cxx}> ${from}_TO_${to}{};\n")
     endif()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // iecoop/fmt.hpp — fmt support: fmt::format("{}", x) prints IEC values as ST writes them:
-// TIME as T#1s500ms, LTIME as LTIME#1ms500us, BOOL as TRUE/FALSE, STRING and WSTRING as
+// TIME as T#1s500ms, LTIME as LTIME#1ms500us, DATE as D#2026-11-23, DT as DT#2026-11-23-12:30:00
+// (and TOD, LDATE, LTOD, LDT likewise), BOOL as TRUE/FALSE, STRING and WSTRING as
 // their text (WSTRING in UTF-8). Integers and REALs accept fmt's number specs ("{:04x}").
 // A block's var<>, in_out<> and output<>, and a property, print as their values.
 //
@@ -15,6 +16,8 @@
 
 #include <iecoop/detail/utf8.hpp>
 #include <iecoop/detail/value_operators.hpp>
+#include <iecoop/types/date_time.hpp>
+#include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
@@ -60,6 +63,16 @@ struct fmt::formatter<iecoop::basic_time<Rep, Period>> : fmt::formatter<std::str
   template <class Context>
   auto format(iecoop::basic_time<Rep, Period> value, Context& ctx) const {
     char text[iecoop::max_text_length<iecoop::basic_time<Rep, Period>>];
+    const char* end = iecoop::to_text(text, value);
+    return fmt::formatter<std::string_view>::format(std::string_view(text, static_cast<std::size_t>(end - text)), ctx);
+  }
+};
+
+template <class Rep, class Period, iecoop::time_point_kind Kind>
+struct fmt::formatter<iecoop::basic_time_point<Rep, Period, Kind>> : fmt::formatter<std::string_view> {
+  template <class Context>
+  auto format(iecoop::basic_time_point<Rep, Period, Kind> value, Context& ctx) const {
+    char text[iecoop::max_text_length<iecoop::basic_time_point<Rep, Period, Kind>>];
     const char* end = iecoop::to_text(text, value);
     return fmt::formatter<std::string_view>::format(std::string_view(text, static_cast<std::size_t>(end - text)), ctx);
   }

@@ -13,6 +13,8 @@
 #include <iecoop/types/array.hpp>
 #include <iecoop/types/bit_access.hpp>
 #include <iecoop/types/convert.hpp>
+#include <iecoop/types/date_time.hpp>
+#include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/literals.hpp>
@@ -49,6 +51,7 @@
 #include <iecoop/standard/numeric_functions.hpp>
 #include <iecoop/standard/selection_functions.hpp>
 #include <iecoop/standard/string_functions.hpp>
+#include <iecoop/standard/time_functions.hpp>
 #include <iecoop/standard/timers.hpp>
 
 // io/: direct addresses, the process image, located variables, I/O drivers (6.5.5)

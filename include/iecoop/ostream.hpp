@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // iecoop/ostream.hpp — operator<< for IEC values, printing them as ST writes them (TIME as
-// T#1s500ms, BOOL as TRUE/FALSE, WSTRING in UTF-8). Optional: the core never needs
+// T#1s500ms, DATE as D#2026-11-23, BOOL as TRUE/FALSE, WSTRING in UTF-8). Optional: the core never needs
 // <ostream>; include this for iostreams, or for readable values in failed test assertions.
 #pragma once
 
@@ -11,6 +11,8 @@
 #include <iecoop/detail/utf8.hpp>
 #include <iecoop/pou/property.hpp>
 #include <iecoop/pou/variables.hpp>
+#include <iecoop/types/date_time.hpp>
+#include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
@@ -54,6 +56,11 @@ std::ostream& operator<<(std::ostream& os, real<Rep> value) {
 
 template <class Rep, class Period>
 std::ostream& operator<<(std::ostream& os, basic_time<Rep, Period> value) {
+  return detail::print_text(os, value);
+}
+
+template <class Rep, class Period, time_point_kind Kind>
+std::ostream& operator<<(std::ostream& os, basic_time_point<Rep, Period, Kind> value) {
   return detail::print_text(os, value);
 }
 

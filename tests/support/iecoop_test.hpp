@@ -45,7 +45,7 @@ class fault_recorder {
 /// it: the operation really runs, where the sanitizers watch it.
 template <class T>
 T opaque(T value) {
-  if constexpr (iecoop::AnyDuration<T>) {
+  if constexpr (iecoop::AnyDuration<T> || iecoop::AnyDate<T>) {
     volatile typename T::rep raw = value.count();
     return T::from_ticks(raw);
   } else if constexpr (std::is_same_v<T, iecoop::BOOL>) {

@@ -24,6 +24,7 @@
 
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/date_time.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -81,6 +82,14 @@ struct common_iec<BOOL, BOOL> {
 // TIME and LTIME meet as LTIME, as in ST.
 template <class A, class B>
   requires(is_time<A>::value && is_time<B>::value)
+struct common_iec<A, B> {
+  using type = std::conditional_t<(sizeof(A) >= sizeof(B)), A, B>;
+};
+
+// Points in time of one kind (DATE and LDATE, TOD and LTOD, DT and LDT) meet as the L form
+// where one of them is, as in ST.
+template <class A, class B>
+  requires(is_time_point<A>::value && is_time_point<B>::value && A::kind == B::kind)
 struct common_iec<A, B> {
   using type = std::conditional_t<(sizeof(A) >= sizeof(B)), A, B>;
 };

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <iecoop/types/convert.hpp>
+#include <iecoop/types/date_time.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -33,6 +34,12 @@ inline constexpr conversion<BOOL, REAL> BOOL_TO_REAL{};
 inline constexpr conversion<BOOL, LREAL> BOOL_TO_LREAL{};
 inline constexpr conversion<BOOL, TIME> BOOL_TO_TIME{};
 inline constexpr conversion<BOOL, LTIME> BOOL_TO_LTIME{};
+inline constexpr conversion<BOOL, DATE> BOOL_TO_DATE{};
+inline constexpr conversion<BOOL, LDATE> BOOL_TO_LDATE{};
+inline constexpr conversion<BOOL, TOD> BOOL_TO_TOD{};
+inline constexpr conversion<BOOL, LTOD> BOOL_TO_LTOD{};
+inline constexpr conversion<BOOL, DT> BOOL_TO_DT{};
+inline constexpr conversion<BOOL, LDT> BOOL_TO_LDT{};
 inline constexpr conversion<BOOL, STRING<>> BOOL_TO_STRING{};
 inline constexpr conversion<BOOL, WSTRING<>> BOOL_TO_WSTRING{};
 
@@ -53,6 +60,12 @@ inline constexpr conversion<BYTE, REAL> BYTE_TO_REAL{};
 inline constexpr conversion<BYTE, LREAL> BYTE_TO_LREAL{};
 inline constexpr conversion<BYTE, TIME> BYTE_TO_TIME{};
 inline constexpr conversion<BYTE, LTIME> BYTE_TO_LTIME{};
+inline constexpr conversion<BYTE, DATE> BYTE_TO_DATE{};
+inline constexpr conversion<BYTE, LDATE> BYTE_TO_LDATE{};
+inline constexpr conversion<BYTE, TOD> BYTE_TO_TOD{};
+inline constexpr conversion<BYTE, LTOD> BYTE_TO_LTOD{};
+inline constexpr conversion<BYTE, DT> BYTE_TO_DT{};
+inline constexpr conversion<BYTE, LDT> BYTE_TO_LDT{};
 inline constexpr conversion<BYTE, STRING<>> BYTE_TO_STRING{};
 inline constexpr conversion<BYTE, WSTRING<>> BYTE_TO_WSTRING{};
 
@@ -73,6 +86,12 @@ inline constexpr conversion<WORD, REAL> WORD_TO_REAL{};
 inline constexpr conversion<WORD, LREAL> WORD_TO_LREAL{};
 inline constexpr conversion<WORD, TIME> WORD_TO_TIME{};
 inline constexpr conversion<WORD, LTIME> WORD_TO_LTIME{};
+inline constexpr conversion<WORD, DATE> WORD_TO_DATE{};
+inline constexpr conversion<WORD, LDATE> WORD_TO_LDATE{};
+inline constexpr conversion<WORD, TOD> WORD_TO_TOD{};
+inline constexpr conversion<WORD, LTOD> WORD_TO_LTOD{};
+inline constexpr conversion<WORD, DT> WORD_TO_DT{};
+inline constexpr conversion<WORD, LDT> WORD_TO_LDT{};
 inline constexpr conversion<WORD, STRING<>> WORD_TO_STRING{};
 inline constexpr conversion<WORD, WSTRING<>> WORD_TO_WSTRING{};
 
@@ -93,6 +112,12 @@ inline constexpr conversion<DWORD, REAL> DWORD_TO_REAL{};
 inline constexpr conversion<DWORD, LREAL> DWORD_TO_LREAL{};
 inline constexpr conversion<DWORD, TIME> DWORD_TO_TIME{};
 inline constexpr conversion<DWORD, LTIME> DWORD_TO_LTIME{};
+inline constexpr conversion<DWORD, DATE> DWORD_TO_DATE{};
+inline constexpr conversion<DWORD, LDATE> DWORD_TO_LDATE{};
+inline constexpr conversion<DWORD, TOD> DWORD_TO_TOD{};
+inline constexpr conversion<DWORD, LTOD> DWORD_TO_LTOD{};
+inline constexpr conversion<DWORD, DT> DWORD_TO_DT{};
+inline constexpr conversion<DWORD, LDT> DWORD_TO_LDT{};
 inline constexpr conversion<DWORD, STRING<>> DWORD_TO_STRING{};
 inline constexpr conversion<DWORD, WSTRING<>> DWORD_TO_WSTRING{};
 
@@ -113,6 +138,12 @@ inline constexpr conversion<LWORD, REAL> LWORD_TO_REAL{};
 inline constexpr conversion<LWORD, LREAL> LWORD_TO_LREAL{};
 inline constexpr conversion<LWORD, TIME> LWORD_TO_TIME{};
 inline constexpr conversion<LWORD, LTIME> LWORD_TO_LTIME{};
+inline constexpr conversion<LWORD, DATE> LWORD_TO_DATE{};
+inline constexpr conversion<LWORD, LDATE> LWORD_TO_LDATE{};
+inline constexpr conversion<LWORD, TOD> LWORD_TO_TOD{};
+inline constexpr conversion<LWORD, LTOD> LWORD_TO_LTOD{};
+inline constexpr conversion<LWORD, DT> LWORD_TO_DT{};
+inline constexpr conversion<LWORD, LDT> LWORD_TO_LDT{};
 inline constexpr conversion<LWORD, STRING<>> LWORD_TO_STRING{};
 inline constexpr conversion<LWORD, WSTRING<>> LWORD_TO_WSTRING{};
 
@@ -133,6 +164,12 @@ inline constexpr conversion<SINT, REAL> SINT_TO_REAL{};
 inline constexpr conversion<SINT, LREAL> SINT_TO_LREAL{};
 inline constexpr conversion<SINT, TIME> SINT_TO_TIME{};
 inline constexpr conversion<SINT, LTIME> SINT_TO_LTIME{};
+inline constexpr conversion<SINT, DATE> SINT_TO_DATE{};
+inline constexpr conversion<SINT, LDATE> SINT_TO_LDATE{};
+inline constexpr conversion<SINT, TOD> SINT_TO_TOD{};
+inline constexpr conversion<SINT, LTOD> SINT_TO_LTOD{};
+inline constexpr conversion<SINT, DT> SINT_TO_DT{};
+inline constexpr conversion<SINT, LDT> SINT_TO_LDT{};
 inline constexpr conversion<SINT, STRING<>> SINT_TO_STRING{};
 inline constexpr conversion<SINT, WSTRING<>> SINT_TO_WSTRING{};
 
@@ -153,6 +190,12 @@ inline constexpr conversion<INT, REAL> INT_TO_REAL{};
 inline constexpr conversion<INT, LREAL> INT_TO_LREAL{};
 inline constexpr conversion<INT, TIME> INT_TO_TIME{};
 inline constexpr conversion<INT, LTIME> INT_TO_LTIME{};
+inline constexpr conversion<INT, DATE> INT_TO_DATE{};
+inline constexpr conversion<INT, LDATE> INT_TO_LDATE{};
+inline constexpr conversion<INT, TOD> INT_TO_TOD{};
+inline constexpr conversion<INT, LTOD> INT_TO_LTOD{};
+inline constexpr conversion<INT, DT> INT_TO_DT{};
+inline constexpr conversion<INT, LDT> INT_TO_LDT{};
 inline constexpr conversion<INT, STRING<>> INT_TO_STRING{};
 inline constexpr conversion<INT, WSTRING<>> INT_TO_WSTRING{};
 
@@ -173,6 +216,12 @@ inline constexpr conversion<DINT, REAL> DINT_TO_REAL{};
 inline constexpr conversion<DINT, LREAL> DINT_TO_LREAL{};
 inline constexpr conversion<DINT, TIME> DINT_TO_TIME{};
 inline constexpr conversion<DINT, LTIME> DINT_TO_LTIME{};
+inline constexpr conversion<DINT, DATE> DINT_TO_DATE{};
+inline constexpr conversion<DINT, LDATE> DINT_TO_LDATE{};
+inline constexpr conversion<DINT, TOD> DINT_TO_TOD{};
+inline constexpr conversion<DINT, LTOD> DINT_TO_LTOD{};
+inline constexpr conversion<DINT, DT> DINT_TO_DT{};
+inline constexpr conversion<DINT, LDT> DINT_TO_LDT{};
 inline constexpr conversion<DINT, STRING<>> DINT_TO_STRING{};
 inline constexpr conversion<DINT, WSTRING<>> DINT_TO_WSTRING{};
 
@@ -193,6 +242,12 @@ inline constexpr conversion<LINT, REAL> LINT_TO_REAL{};
 inline constexpr conversion<LINT, LREAL> LINT_TO_LREAL{};
 inline constexpr conversion<LINT, TIME> LINT_TO_TIME{};
 inline constexpr conversion<LINT, LTIME> LINT_TO_LTIME{};
+inline constexpr conversion<LINT, DATE> LINT_TO_DATE{};
+inline constexpr conversion<LINT, LDATE> LINT_TO_LDATE{};
+inline constexpr conversion<LINT, TOD> LINT_TO_TOD{};
+inline constexpr conversion<LINT, LTOD> LINT_TO_LTOD{};
+inline constexpr conversion<LINT, DT> LINT_TO_DT{};
+inline constexpr conversion<LINT, LDT> LINT_TO_LDT{};
 inline constexpr conversion<LINT, STRING<>> LINT_TO_STRING{};
 inline constexpr conversion<LINT, WSTRING<>> LINT_TO_WSTRING{};
 
@@ -213,6 +268,12 @@ inline constexpr conversion<USINT, REAL> USINT_TO_REAL{};
 inline constexpr conversion<USINT, LREAL> USINT_TO_LREAL{};
 inline constexpr conversion<USINT, TIME> USINT_TO_TIME{};
 inline constexpr conversion<USINT, LTIME> USINT_TO_LTIME{};
+inline constexpr conversion<USINT, DATE> USINT_TO_DATE{};
+inline constexpr conversion<USINT, LDATE> USINT_TO_LDATE{};
+inline constexpr conversion<USINT, TOD> USINT_TO_TOD{};
+inline constexpr conversion<USINT, LTOD> USINT_TO_LTOD{};
+inline constexpr conversion<USINT, DT> USINT_TO_DT{};
+inline constexpr conversion<USINT, LDT> USINT_TO_LDT{};
 inline constexpr conversion<USINT, STRING<>> USINT_TO_STRING{};
 inline constexpr conversion<USINT, WSTRING<>> USINT_TO_WSTRING{};
 
@@ -233,6 +294,12 @@ inline constexpr conversion<UINT, REAL> UINT_TO_REAL{};
 inline constexpr conversion<UINT, LREAL> UINT_TO_LREAL{};
 inline constexpr conversion<UINT, TIME> UINT_TO_TIME{};
 inline constexpr conversion<UINT, LTIME> UINT_TO_LTIME{};
+inline constexpr conversion<UINT, DATE> UINT_TO_DATE{};
+inline constexpr conversion<UINT, LDATE> UINT_TO_LDATE{};
+inline constexpr conversion<UINT, TOD> UINT_TO_TOD{};
+inline constexpr conversion<UINT, LTOD> UINT_TO_LTOD{};
+inline constexpr conversion<UINT, DT> UINT_TO_DT{};
+inline constexpr conversion<UINT, LDT> UINT_TO_LDT{};
 inline constexpr conversion<UINT, STRING<>> UINT_TO_STRING{};
 inline constexpr conversion<UINT, WSTRING<>> UINT_TO_WSTRING{};
 
@@ -253,6 +320,12 @@ inline constexpr conversion<UDINT, REAL> UDINT_TO_REAL{};
 inline constexpr conversion<UDINT, LREAL> UDINT_TO_LREAL{};
 inline constexpr conversion<UDINT, TIME> UDINT_TO_TIME{};
 inline constexpr conversion<UDINT, LTIME> UDINT_TO_LTIME{};
+inline constexpr conversion<UDINT, DATE> UDINT_TO_DATE{};
+inline constexpr conversion<UDINT, LDATE> UDINT_TO_LDATE{};
+inline constexpr conversion<UDINT, TOD> UDINT_TO_TOD{};
+inline constexpr conversion<UDINT, LTOD> UDINT_TO_LTOD{};
+inline constexpr conversion<UDINT, DT> UDINT_TO_DT{};
+inline constexpr conversion<UDINT, LDT> UDINT_TO_LDT{};
 inline constexpr conversion<UDINT, STRING<>> UDINT_TO_STRING{};
 inline constexpr conversion<UDINT, WSTRING<>> UDINT_TO_WSTRING{};
 
@@ -273,6 +346,12 @@ inline constexpr conversion<ULINT, REAL> ULINT_TO_REAL{};
 inline constexpr conversion<ULINT, LREAL> ULINT_TO_LREAL{};
 inline constexpr conversion<ULINT, TIME> ULINT_TO_TIME{};
 inline constexpr conversion<ULINT, LTIME> ULINT_TO_LTIME{};
+inline constexpr conversion<ULINT, DATE> ULINT_TO_DATE{};
+inline constexpr conversion<ULINT, LDATE> ULINT_TO_LDATE{};
+inline constexpr conversion<ULINT, TOD> ULINT_TO_TOD{};
+inline constexpr conversion<ULINT, LTOD> ULINT_TO_LTOD{};
+inline constexpr conversion<ULINT, DT> ULINT_TO_DT{};
+inline constexpr conversion<ULINT, LDT> ULINT_TO_LDT{};
 inline constexpr conversion<ULINT, STRING<>> ULINT_TO_STRING{};
 inline constexpr conversion<ULINT, WSTRING<>> ULINT_TO_WSTRING{};
 
@@ -293,6 +372,12 @@ inline constexpr conversion<REAL, ULINT> REAL_TO_ULINT{};
 inline constexpr conversion<REAL, LREAL> REAL_TO_LREAL{};
 inline constexpr conversion<REAL, TIME> REAL_TO_TIME{};
 inline constexpr conversion<REAL, LTIME> REAL_TO_LTIME{};
+inline constexpr conversion<REAL, DATE> REAL_TO_DATE{};
+inline constexpr conversion<REAL, LDATE> REAL_TO_LDATE{};
+inline constexpr conversion<REAL, TOD> REAL_TO_TOD{};
+inline constexpr conversion<REAL, LTOD> REAL_TO_LTOD{};
+inline constexpr conversion<REAL, DT> REAL_TO_DT{};
+inline constexpr conversion<REAL, LDT> REAL_TO_LDT{};
 inline constexpr conversion<REAL, STRING<>> REAL_TO_STRING{};
 inline constexpr conversion<REAL, WSTRING<>> REAL_TO_WSTRING{};
 
@@ -313,6 +398,12 @@ inline constexpr conversion<LREAL, ULINT> LREAL_TO_ULINT{};
 inline constexpr conversion<LREAL, REAL> LREAL_TO_REAL{};
 inline constexpr conversion<LREAL, TIME> LREAL_TO_TIME{};
 inline constexpr conversion<LREAL, LTIME> LREAL_TO_LTIME{};
+inline constexpr conversion<LREAL, DATE> LREAL_TO_DATE{};
+inline constexpr conversion<LREAL, LDATE> LREAL_TO_LDATE{};
+inline constexpr conversion<LREAL, TOD> LREAL_TO_TOD{};
+inline constexpr conversion<LREAL, LTOD> LREAL_TO_LTOD{};
+inline constexpr conversion<LREAL, DT> LREAL_TO_DT{};
+inline constexpr conversion<LREAL, LDT> LREAL_TO_LDT{};
 inline constexpr conversion<LREAL, STRING<>> LREAL_TO_STRING{};
 inline constexpr conversion<LREAL, WSTRING<>> LREAL_TO_WSTRING{};
 
@@ -356,6 +447,138 @@ inline constexpr conversion<LTIME, TIME> LTIME_TO_TIME{};
 inline constexpr conversion<LTIME, STRING<>> LTIME_TO_STRING{};
 inline constexpr conversion<LTIME, WSTRING<>> LTIME_TO_WSTRING{};
 
+// DATE_TO_*
+inline constexpr conversion<DATE, BOOL> DATE_TO_BOOL{};
+inline constexpr conversion<DATE, BYTE> DATE_TO_BYTE{};
+inline constexpr conversion<DATE, WORD> DATE_TO_WORD{};
+inline constexpr conversion<DATE, DWORD> DATE_TO_DWORD{};
+inline constexpr conversion<DATE, LWORD> DATE_TO_LWORD{};
+inline constexpr conversion<DATE, SINT> DATE_TO_SINT{};
+inline constexpr conversion<DATE, INT> DATE_TO_INT{};
+inline constexpr conversion<DATE, DINT> DATE_TO_DINT{};
+inline constexpr conversion<DATE, LINT> DATE_TO_LINT{};
+inline constexpr conversion<DATE, USINT> DATE_TO_USINT{};
+inline constexpr conversion<DATE, UINT> DATE_TO_UINT{};
+inline constexpr conversion<DATE, UDINT> DATE_TO_UDINT{};
+inline constexpr conversion<DATE, ULINT> DATE_TO_ULINT{};
+inline constexpr conversion<DATE, REAL> DATE_TO_REAL{};
+inline constexpr conversion<DATE, LREAL> DATE_TO_LREAL{};
+inline constexpr conversion<DATE, LDATE> DATE_TO_LDATE{};
+inline constexpr conversion<DATE, DT> DATE_TO_DT{};
+inline constexpr conversion<DATE, LDT> DATE_TO_LDT{};
+inline constexpr conversion<DATE, STRING<>> DATE_TO_STRING{};
+inline constexpr conversion<DATE, WSTRING<>> DATE_TO_WSTRING{};
+
+// LDATE_TO_*
+inline constexpr conversion<LDATE, BOOL> LDATE_TO_BOOL{};
+inline constexpr conversion<LDATE, BYTE> LDATE_TO_BYTE{};
+inline constexpr conversion<LDATE, WORD> LDATE_TO_WORD{};
+inline constexpr conversion<LDATE, DWORD> LDATE_TO_DWORD{};
+inline constexpr conversion<LDATE, LWORD> LDATE_TO_LWORD{};
+inline constexpr conversion<LDATE, SINT> LDATE_TO_SINT{};
+inline constexpr conversion<LDATE, INT> LDATE_TO_INT{};
+inline constexpr conversion<LDATE, DINT> LDATE_TO_DINT{};
+inline constexpr conversion<LDATE, LINT> LDATE_TO_LINT{};
+inline constexpr conversion<LDATE, USINT> LDATE_TO_USINT{};
+inline constexpr conversion<LDATE, UINT> LDATE_TO_UINT{};
+inline constexpr conversion<LDATE, UDINT> LDATE_TO_UDINT{};
+inline constexpr conversion<LDATE, ULINT> LDATE_TO_ULINT{};
+inline constexpr conversion<LDATE, REAL> LDATE_TO_REAL{};
+inline constexpr conversion<LDATE, LREAL> LDATE_TO_LREAL{};
+inline constexpr conversion<LDATE, DATE> LDATE_TO_DATE{};
+inline constexpr conversion<LDATE, DT> LDATE_TO_DT{};
+inline constexpr conversion<LDATE, LDT> LDATE_TO_LDT{};
+inline constexpr conversion<LDATE, STRING<>> LDATE_TO_STRING{};
+inline constexpr conversion<LDATE, WSTRING<>> LDATE_TO_WSTRING{};
+
+// TOD_TO_*
+inline constexpr conversion<TOD, BOOL> TOD_TO_BOOL{};
+inline constexpr conversion<TOD, BYTE> TOD_TO_BYTE{};
+inline constexpr conversion<TOD, WORD> TOD_TO_WORD{};
+inline constexpr conversion<TOD, DWORD> TOD_TO_DWORD{};
+inline constexpr conversion<TOD, LWORD> TOD_TO_LWORD{};
+inline constexpr conversion<TOD, SINT> TOD_TO_SINT{};
+inline constexpr conversion<TOD, INT> TOD_TO_INT{};
+inline constexpr conversion<TOD, DINT> TOD_TO_DINT{};
+inline constexpr conversion<TOD, LINT> TOD_TO_LINT{};
+inline constexpr conversion<TOD, USINT> TOD_TO_USINT{};
+inline constexpr conversion<TOD, UINT> TOD_TO_UINT{};
+inline constexpr conversion<TOD, UDINT> TOD_TO_UDINT{};
+inline constexpr conversion<TOD, ULINT> TOD_TO_ULINT{};
+inline constexpr conversion<TOD, REAL> TOD_TO_REAL{};
+inline constexpr conversion<TOD, LREAL> TOD_TO_LREAL{};
+inline constexpr conversion<TOD, LTOD> TOD_TO_LTOD{};
+inline constexpr conversion<TOD, STRING<>> TOD_TO_STRING{};
+inline constexpr conversion<TOD, WSTRING<>> TOD_TO_WSTRING{};
+
+// LTOD_TO_*
+inline constexpr conversion<LTOD, BOOL> LTOD_TO_BOOL{};
+inline constexpr conversion<LTOD, BYTE> LTOD_TO_BYTE{};
+inline constexpr conversion<LTOD, WORD> LTOD_TO_WORD{};
+inline constexpr conversion<LTOD, DWORD> LTOD_TO_DWORD{};
+inline constexpr conversion<LTOD, LWORD> LTOD_TO_LWORD{};
+inline constexpr conversion<LTOD, SINT> LTOD_TO_SINT{};
+inline constexpr conversion<LTOD, INT> LTOD_TO_INT{};
+inline constexpr conversion<LTOD, DINT> LTOD_TO_DINT{};
+inline constexpr conversion<LTOD, LINT> LTOD_TO_LINT{};
+inline constexpr conversion<LTOD, USINT> LTOD_TO_USINT{};
+inline constexpr conversion<LTOD, UINT> LTOD_TO_UINT{};
+inline constexpr conversion<LTOD, UDINT> LTOD_TO_UDINT{};
+inline constexpr conversion<LTOD, ULINT> LTOD_TO_ULINT{};
+inline constexpr conversion<LTOD, REAL> LTOD_TO_REAL{};
+inline constexpr conversion<LTOD, LREAL> LTOD_TO_LREAL{};
+inline constexpr conversion<LTOD, TOD> LTOD_TO_TOD{};
+inline constexpr conversion<LTOD, STRING<>> LTOD_TO_STRING{};
+inline constexpr conversion<LTOD, WSTRING<>> LTOD_TO_WSTRING{};
+
+// DT_TO_*
+inline constexpr conversion<DT, BOOL> DT_TO_BOOL{};
+inline constexpr conversion<DT, BYTE> DT_TO_BYTE{};
+inline constexpr conversion<DT, WORD> DT_TO_WORD{};
+inline constexpr conversion<DT, DWORD> DT_TO_DWORD{};
+inline constexpr conversion<DT, LWORD> DT_TO_LWORD{};
+inline constexpr conversion<DT, SINT> DT_TO_SINT{};
+inline constexpr conversion<DT, INT> DT_TO_INT{};
+inline constexpr conversion<DT, DINT> DT_TO_DINT{};
+inline constexpr conversion<DT, LINT> DT_TO_LINT{};
+inline constexpr conversion<DT, USINT> DT_TO_USINT{};
+inline constexpr conversion<DT, UINT> DT_TO_UINT{};
+inline constexpr conversion<DT, UDINT> DT_TO_UDINT{};
+inline constexpr conversion<DT, ULINT> DT_TO_ULINT{};
+inline constexpr conversion<DT, REAL> DT_TO_REAL{};
+inline constexpr conversion<DT, LREAL> DT_TO_LREAL{};
+inline constexpr conversion<DT, DATE> DT_TO_DATE{};
+inline constexpr conversion<DT, LDATE> DT_TO_LDATE{};
+inline constexpr conversion<DT, TOD> DT_TO_TOD{};
+inline constexpr conversion<DT, LTOD> DT_TO_LTOD{};
+inline constexpr conversion<DT, LDT> DT_TO_LDT{};
+inline constexpr conversion<DT, STRING<>> DT_TO_STRING{};
+inline constexpr conversion<DT, WSTRING<>> DT_TO_WSTRING{};
+
+// LDT_TO_*
+inline constexpr conversion<LDT, BOOL> LDT_TO_BOOL{};
+inline constexpr conversion<LDT, BYTE> LDT_TO_BYTE{};
+inline constexpr conversion<LDT, WORD> LDT_TO_WORD{};
+inline constexpr conversion<LDT, DWORD> LDT_TO_DWORD{};
+inline constexpr conversion<LDT, LWORD> LDT_TO_LWORD{};
+inline constexpr conversion<LDT, SINT> LDT_TO_SINT{};
+inline constexpr conversion<LDT, INT> LDT_TO_INT{};
+inline constexpr conversion<LDT, DINT> LDT_TO_DINT{};
+inline constexpr conversion<LDT, LINT> LDT_TO_LINT{};
+inline constexpr conversion<LDT, USINT> LDT_TO_USINT{};
+inline constexpr conversion<LDT, UINT> LDT_TO_UINT{};
+inline constexpr conversion<LDT, UDINT> LDT_TO_UDINT{};
+inline constexpr conversion<LDT, ULINT> LDT_TO_ULINT{};
+inline constexpr conversion<LDT, REAL> LDT_TO_REAL{};
+inline constexpr conversion<LDT, LREAL> LDT_TO_LREAL{};
+inline constexpr conversion<LDT, DATE> LDT_TO_DATE{};
+inline constexpr conversion<LDT, LDATE> LDT_TO_LDATE{};
+inline constexpr conversion<LDT, TOD> LDT_TO_TOD{};
+inline constexpr conversion<LDT, LTOD> LDT_TO_LTOD{};
+inline constexpr conversion<LDT, DT> LDT_TO_DT{};
+inline constexpr conversion<LDT, STRING<>> LDT_TO_STRING{};
+inline constexpr conversion<LDT, WSTRING<>> LDT_TO_WSTRING{};
+
 // STRING_TO_*
 inline constexpr conversion<STRING<>, BOOL> STRING_TO_BOOL{};
 inline constexpr conversion<STRING<>, BYTE> STRING_TO_BYTE{};
@@ -374,6 +597,12 @@ inline constexpr conversion<STRING<>, REAL> STRING_TO_REAL{};
 inline constexpr conversion<STRING<>, LREAL> STRING_TO_LREAL{};
 inline constexpr conversion<STRING<>, TIME> STRING_TO_TIME{};
 inline constexpr conversion<STRING<>, LTIME> STRING_TO_LTIME{};
+inline constexpr conversion<STRING<>, DATE> STRING_TO_DATE{};
+inline constexpr conversion<STRING<>, LDATE> STRING_TO_LDATE{};
+inline constexpr conversion<STRING<>, TOD> STRING_TO_TOD{};
+inline constexpr conversion<STRING<>, LTOD> STRING_TO_LTOD{};
+inline constexpr conversion<STRING<>, DT> STRING_TO_DT{};
+inline constexpr conversion<STRING<>, LDT> STRING_TO_LDT{};
 inline constexpr conversion<STRING<>, WSTRING<>> STRING_TO_WSTRING{};
 
 // WSTRING_TO_*
@@ -394,6 +623,12 @@ inline constexpr conversion<WSTRING<>, REAL> WSTRING_TO_REAL{};
 inline constexpr conversion<WSTRING<>, LREAL> WSTRING_TO_LREAL{};
 inline constexpr conversion<WSTRING<>, TIME> WSTRING_TO_TIME{};
 inline constexpr conversion<WSTRING<>, LTIME> WSTRING_TO_LTIME{};
+inline constexpr conversion<WSTRING<>, DATE> WSTRING_TO_DATE{};
+inline constexpr conversion<WSTRING<>, LDATE> WSTRING_TO_LDATE{};
+inline constexpr conversion<WSTRING<>, TOD> WSTRING_TO_TOD{};
+inline constexpr conversion<WSTRING<>, LTOD> WSTRING_TO_LTOD{};
+inline constexpr conversion<WSTRING<>, DT> WSTRING_TO_DT{};
+inline constexpr conversion<WSTRING<>, LDT> WSTRING_TO_LDT{};
 inline constexpr conversion<WSTRING<>, STRING<>> WSTRING_TO_STRING{};
 
 // TO_* (IEC 3rd edition): from any elementary type
@@ -414,6 +649,12 @@ inline constexpr to_type<REAL> TO_REAL{};
 inline constexpr to_type<LREAL> TO_LREAL{};
 inline constexpr to_type<TIME> TO_TIME{};
 inline constexpr to_type<LTIME> TO_LTIME{};
+inline constexpr to_type<DATE> TO_DATE{};
+inline constexpr to_type<LDATE> TO_LDATE{};
+inline constexpr to_type<TOD> TO_TOD{};
+inline constexpr to_type<LTOD> TO_LTOD{};
+inline constexpr to_type<DT> TO_DT{};
+inline constexpr to_type<LDT> TO_LDT{};
 inline constexpr to_type<STRING<>> TO_STRING{};
 inline constexpr to_type<WSTRING<>> TO_WSTRING{};
 

@@ -10,7 +10,11 @@
 //   x       -> BOOL      x <> 0;   BOOL -> x: 0 or 1
 //   TIME    -> number    milliseconds (LTIME: nanoseconds); number -> TIME likewise
 //   TIME   <-> LTIME     exact widening; LTIME_TO_TIME truncates to whole ms and wraps
-//   x       -> STRING    IEC text: 'TRUE', '-5', '1.5', 'T#1s500ms', 'LTIME#1us'
+//   DATE, DT -> number   seconds since 1970 (TOD: ms since midnight; the L forms: ns), and back
+//   DT      -> DATE      the day (DT_TO_DATE); DT -> TOD the time of day (DT_TO_TOD); DATE -> DT
+//                        its midnight; DATE <-> LDATE, TOD <-> LTOD, DT <-> LDT as TIME <-> LTIME.
+//                        A duration and a point, or a TOD and a date, do not convert
+//   x       -> STRING    IEC text: 'TRUE', '-5', '1.5', 'T#1s500ms', 'LTIME#1us', 'D#2026-11-23'
 //   STRING  -> x         parses that text (surrounding spaces ignored); text that is not a
 //                        valid literal gives 0 / FALSE / T#0ms, as CODESYS does
 //   STRING <-> WSTRING   Latin-1 <-> UCS-2; characters above 255 become '?'
@@ -25,6 +29,8 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/float_to_int.hpp>
+#include <iecoop/types/date_time.hpp>
+#include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
@@ -36,7 +42,8 @@ namespace iecoop {
 
 /// Any IEC elementary type convert<> handles (IEC ANY_ELEMENTARY, as far as iecoop has it).
 template <class T>
-concept AnyElementary = std::is_same_v<T, BOOL> || AnyInteger<T> || AnyReal<T> || AnyDuration<T> || AnyString<T>;
+concept AnyElementary =
+    std::is_same_v<T, BOOL> || AnyInteger<T> || AnyReal<T> || AnyDuration<T> || AnyDate<T> || AnyString<T>;
 
 namespace detail {
 
@@ -113,7 +120,48 @@ constexpr To from_text(std::string_view text) noexcept {
     return parse_time(text).value_or(TIME{});
   } else if constexpr (std::is_same_v<To, LTIME>) {
     return parse_ltime(text).value_or(LTIME{});
+  } else if constexpr (AnyDate<To>) {
+    return parse_time_point<To>(text).value_or(To{});
   }
+}
+
+/// Durations and points count ticks; the other types hold a value.
+template <class X>
+constexpr auto ticks_or_value(const X& x) noexcept {
+  if constexpr (AnyDuration<X> || AnyDate<X>) {
+    return x.count();
+  } else {
+    return x.value();
+  }
+}
+
+/// A point in time as another of a kind it converts to (see the rules at the top).
+template <class To, class X>
+constexpr To convert_point(const X& x) noexcept {
+  // Through nanoseconds: exact for every value of a 32-bit point; an L form's own value.
+  const std::uint64_t ns = long_point_t<X>(x).count();
+  std::uint64_t result = ns;
+  if constexpr (X::kind == time_point_kind::date_and_time && To::kind == time_point_kind::date) {
+    result = ns - ns % ns_per_day;  // DT_TO_DATE: the day's midnight
+  } else if constexpr (X::kind == time_point_kind::date_and_time && To::kind == time_point_kind::time_of_day) {
+    result = ns % ns_per_day;  // DT_TO_TOD: the time since midnight
+  }
+  return static_cast<To>(long_point_t<To>::from_ticks(result));
+}
+
+/// Which points in time convert into which: a kind into itself, a DT into a DATE or TOD, a
+/// DATE into a DT. (CODESYS's conversions between a TOD and a date have no documented meaning.)
+template <class From, class To>
+inline constexpr bool points_convert =
+    From::kind == To::kind || From::kind == time_point_kind::date_and_time ||
+    (From::kind == time_point_kind::date && To::kind == time_point_kind::date_and_time);
+
+template <class From, class To>
+constexpr void no_point_conversion() {
+  static_assert(dependent_false<From, To>,
+                "iecoop: no IEC conversion between the types spelled in `From` and `To`: a duration and a point in "
+                "time, or a TIME_OF_DAY and a date, do not convert into each other; compute a point with "
+                "DT + TIME, or split a DT with DT_TO_DATE and DT_TO_TOD");
 }
 
 /// STRING -> WSTRING and back, character by character.
@@ -145,6 +193,16 @@ template <class To, class From>
 
   if constexpr (std::is_same_v<To, X>) {
     return x;
+  } else if constexpr ((AnyDate<To> && AnyDuration<X>) || (AnyDuration<To> && AnyDate<X>)) {
+    detail::no_point_conversion<detail::spelled_iec_name_t<X>, detail::spelled_iec_name_t<To>>();
+    return To{};
+  } else if constexpr (AnyDate<To> && AnyDate<X>) {
+    if constexpr (detail::points_convert<X, To>) {
+      return detail::convert_point<To>(x);
+    } else {
+      detail::no_point_conversion<detail::spelled_iec_name_t<X>, detail::spelled_iec_name_t<To>>();
+      return To{};
+    }
   } else if constexpr (AnyString<To>) {
     using C = typename To::char_type;
     if constexpr (AnyString<X>) {
@@ -170,13 +228,9 @@ template <class To, class From>
       return detail::from_text<To>(convert<STRING<X::capacity()>>(x).view());
     }
   } else if constexpr (std::is_same_v<To, BOOL>) {
-    if constexpr (AnyDuration<X>) {
-      return BOOL(x.count() != 0);
-    } else {
-      return BOOL(x.value() != 0);
-    }
+    return BOOL(detail::ticks_or_value(x) != 0);
   } else if constexpr (std::is_same_v<X, BOOL>) {
-    if constexpr (AnyDuration<To>) {
+    if constexpr (AnyDuration<To> || AnyDate<To>) {
       return To::from_ticks(x ? 1 : 0);
     } else {
       return To(static_cast<typename To::rep>(x ? 1 : 0));
@@ -187,17 +241,13 @@ template <class To, class From>
       return To(static_cast<R>(x.value()));
     } else if constexpr (AnyReal<X>) {
       return To(detail::round_to<R>(x.value()));
-    } else {  // duration
+    } else {  // duration or point in time: its ticks
       return To(static_cast<R>(x.count()));
     }
   } else if constexpr (AnyReal<To>) {
     using R = typename To::rep;
-    if constexpr (AnyDuration<X>) {
-      return To(static_cast<R>(x.count()));
-    } else {
-      return To(static_cast<R>(x.value()));
-    }
-  } else if constexpr (AnyDuration<To>) {
+    return To(static_cast<R>(detail::ticks_or_value(x)));
+  } else if constexpr (AnyDuration<To> || AnyDate<To>) {
     using R = typename To::rep;
     if constexpr (AnyDuration<X>) {
       return static_cast<To>(x);

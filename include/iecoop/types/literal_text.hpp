@@ -32,7 +32,7 @@ namespace iecoop {
 enum class parse_error : std::uint8_t {
   none,                  ///< no error
   empty,                 ///< the text is empty
-  missing_prefix,        ///< a duration needs its prefix: T#, TIME#, LT# or LTIME#
+  missing_prefix,        ///< a duration or point in time needs its prefix: T#, LTIME#, D#, TOD#, DT#...
   wrong_prefix,          ///< the type prefix names another type (LTIME# where TIME is wanted)
   no_value,              ///< nothing follows the '#'
   expected_digit,        ///< a digit was expected here
@@ -48,6 +48,9 @@ enum class parse_error : std::uint8_t {
   invalid_digit,         ///< a digit not valid in the literal's base
   invalid_base,          ///< bases are 2#, 8#, 10# and 16#
   trailing_characters,   ///< text after a complete literal
+  expected_separator,    ///< a date or time of day needs '-' between its fields, ':' in the time
+  invalid_date,          ///< no such day: a month outside 1..12, a day past the month's end
+  invalid_time_of_day,   ///< an hour above 23, a minute or second above 59
 };
 
 /// A one-line description of a parse error.
@@ -55,7 +58,8 @@ enum class parse_error : std::uint8_t {
   switch (error) {
     case parse_error::none: return "no error";
     case parse_error::empty: return "empty text";
-    case parse_error::missing_prefix: return "a duration literal needs the prefix T#, TIME#, LT# or LTIME#";
+    case parse_error::missing_prefix:
+      return "the literal needs its type prefix (T#, LTIME#, D#, TOD#, DT#, LDATE#, LTOD#, LDT#)";
     case parse_error::wrong_prefix: return "the type prefix names another type";
     case parse_error::no_value: return "no value after '#'";
     case parse_error::expected_digit: return "a digit was expected";
@@ -71,6 +75,9 @@ enum class parse_error : std::uint8_t {
     case parse_error::invalid_digit: return "a digit not valid in this base";
     case parse_error::invalid_base: return "the base must be 2, 8, 10 or 16";
     case parse_error::trailing_characters: return "unexpected characters after the literal";
+    case parse_error::expected_separator: return "a '-' between the date's fields or a ':' in the time of day";
+    case parse_error::invalid_date: return "no such date (a month outside 1..12, or a day past the month's end)";
+    case parse_error::invalid_time_of_day: return "no such time of day (an hour above 23, a minute or second above 59)";
   }
   return "unknown parse error";
 }

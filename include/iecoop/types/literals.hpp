@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 // iecoop/types/literals.hpp — IEC literals written as in ST, checked at compile time:
-// "T#1h2m3s4ms"_iec, "LTIME#1ms500us"_iec, "INT#-5"_iec, "WORD#16#FFFF"_iec, "TRUE"_iec.
+// "T#1h2m3s4ms"_iec, "LTIME#1ms500us"_iec, "INT#-5"_iec, "WORD#16#FFFF"_iec, "TRUE"_iec,
+// "D#2026-11-23"_iec, "TOD#12:30:00.5"_iec, "DT#2026-11-23-12:30:00"_iec.
 //
 // The literal's prefix picks its type: T#/TIME# give TIME, LT#/LTIME# give LTIME, a type
-// name (SINT#..ULINT#, BYTE#..LWORD#, BOOL#) gives that type. An invalid literal does not
-// compile, and the static_assert that stops it says what is wrong. For text known only at
-// run time use parse_time(), parse_integer<T>() and friends from <iecoop/types/literal_text.hpp>.
+// name (SINT#..ULINT#, BYTE#..LWORD#, BOOL#) gives that type, D#/DATE#, TOD#/TIME_OF_DAY#,
+// DT#/DATE_AND_TIME#, LD#/LDATE#, LTOD#/LTIME_OF_DAY#, LDT#/LDATE_AND_TIME# the points in
+// time. An invalid literal does not compile, and the static_assert that stops it says what is
+// wrong. For text known only at run time use parse_time(), parse_integer<T>(), parse_dt() and
+// friends from <iecoop/types/literal_text.hpp> and <iecoop/types/date_time_text.hpp>.
 #pragma once
 
 #include <cstddef>
@@ -15,6 +18,8 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/fixed_string.hpp>
+#include <iecoop/types/date_time.hpp>
+#include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/time.hpp>
@@ -31,9 +36,9 @@ consteval void check_literal() noexcept {
   static_assert(E != parse_error::empty, "iecoop: empty IEC literal; write e.g. \"T#1s\"_iec");
   static_assert(E != parse_error::missing_prefix,
                 "iecoop: an IEC duration literal needs its prefix; write \"T#15ms\", not \"15ms\"");
-  static_assert(
-      E != parse_error::wrong_prefix,
-      "iecoop: unknown literal prefix; use T#, TIME#, LT#, LTIME#, BOOL# or an integer type such as INT# or WORD#");
+  static_assert(E != parse_error::wrong_prefix,
+                "iecoop: unknown literal prefix; use T#, TIME#, LT#, LTIME#, D#, TOD#, DT#, LDATE#, LTOD#, LDT#, BOOL# "
+                "or an integer type such as INT# or WORD#");
   static_assert(E != parse_error::no_value, "iecoop: nothing follows the '#' of the IEC literal; write e.g. \"T#0ms\"");
   static_assert(E != parse_error::expected_digit,
                 "iecoop: the IEC literal has a character where a digit belongs; check the number");
@@ -64,6 +69,28 @@ consteval void check_literal() noexcept {
   static_assert(E != parse_error::invalid_base,
                 "iecoop: the base of an integer literal must be 2#, 8#, 10# or 16#, without sign");
   static_assert(E != parse_error::trailing_characters, "iecoop: unexpected characters after the IEC literal");
+  static_assert(
+      E != parse_error::expected_separator,
+      "iecoop: a date literal separates its fields with '-' and the time of day's with ':' (\"D#2026-11-23\", "
+      "\"TOD#12:30:00\", \"DT#2026-11-23-12:30:00\")");
+  static_assert(E != parse_error::invalid_date,
+                "iecoop: no such date: the month is 1..12 and the day within the month (February has 29 days in leap "
+                "years only: 2000 is one, 2100 is not)");
+  static_assert(E != parse_error::invalid_time_of_day,
+                "iecoop: no such time of day: the hour is 0..23, minutes and seconds 0..59 (\"TOD#23:59:59.999\")");
+}
+
+/// The checks of a DATE, TOD or DT literal: its own words for a value out of range or too
+/// precise, the common ones for the rest.
+template <parse_error E>
+consteval void check_point_literal() noexcept {
+  static_assert(E != parse_error::out_of_range,
+                "iecoop: the date is outside its type's range (DATE and DT: 1970-01-01 to DT#2106-02-07-06:28:15; "
+                "LDATE and LDT: 1970-01-01 to LDT#2554-07-21-23:34:33.709551615); use LDATE# or LDT# for later dates");
+  static_assert(E != parse_error::too_precise,
+                "iecoop: the literal is finer than its type resolves (DT: 1 s, TOD: 1 ms); drop the fraction, or use "
+                "LDT# or LTOD# (1 ns)");
+  if constexpr (E != parse_error::out_of_range && E != parse_error::too_precise) check_literal<E>();
 }
 
 /// `error`, as a value that depends on the template argument X, so a check_literal<> in a
@@ -90,6 +117,12 @@ enum class literal_type {
   word,
   dword,
   lword,
+  date,
+  ldate,
+  tod,
+  ltod,
+  dt,
+  ldt,
   untyped,
   unknown
 };
@@ -156,6 +189,30 @@ template <>
 struct literal_cxx_type<literal_type::lword> {
   using type = LWORD;
 };
+template <>
+struct literal_cxx_type<literal_type::date> {
+  using type = DATE;
+};
+template <>
+struct literal_cxx_type<literal_type::ldate> {
+  using type = LDATE;
+};
+template <>
+struct literal_cxx_type<literal_type::tod> {
+  using type = TOD;
+};
+template <>
+struct literal_cxx_type<literal_type::ltod> {
+  using type = LTOD;
+};
+template <>
+struct literal_cxx_type<literal_type::dt> {
+  using type = DT;
+};
+template <>
+struct literal_cxx_type<literal_type::ldt> {
+  using type = LDT;
+};
 
 // The parsers below work on a copy of the literal's characters made inside the constant
 // evaluation: GCC cannot fold pointer checks on the address of a template argument
@@ -194,6 +251,15 @@ consteval literal_type classify_literal() noexcept {
     case duration_prefix::ltime: return literal_type::ltime;
     case duration_prefix::none: break;
   }
+  switch (classify_point_prefix(p.prefix)) {
+    case point_prefix::date: return literal_type::date;
+    case point_prefix::ldate: return literal_type::ldate;
+    case point_prefix::tod: return literal_type::tod;
+    case point_prefix::ltod: return literal_type::ltod;
+    case point_prefix::dt: return literal_type::dt;
+    case point_prefix::ldt: return literal_type::ldt;
+    case point_prefix::none: break;
+  }
   if (iequals(text, "TRUE") || iequals(text, "FALSE") || iequals(p.prefix, "BOOL")) return literal_type::boolean;
   return integer_literal_type(p.prefix, std::make_index_sequence<12>{});
 }
@@ -207,6 +273,8 @@ consteval parse_result<T> parse_literal() noexcept {
     return parse_ltime(copy.view());
   } else if constexpr (std::is_same_v<T, BOOL>) {
     return parse_bool(copy.view());
+  } else if constexpr (AnyDate<T>) {
+    return parse_time_point<T>(copy.view());
   } else {
     return parse_integer<T>(copy.view());
   }
@@ -247,6 +315,7 @@ inline namespace literals {
  *     TIME  pt = "T#1h2m3s4ms"_iec;
  *     LTIME lt = "LTIME#1ms500us"_iec;
  *     WORD  w  = "WORD#16#FFFF"_iec;
+ *     DT    dt = "DT#2026-11-23-12:30:00"_iec;
  *     "t#5m68s"_iec;                     // does not compile: only the highest unit may overflow
  */
 // constexpr, not consteval: Clang 14 does not evaluate a consteval literal operator template
@@ -269,6 +338,8 @@ constexpr auto operator""_iec() noexcept {
     if constexpr (result.error() == parse_error::unit_overflow) {
       detail::duration_unit_overflow<detail::spelled_t<S>,
                                      detail::spelled_t<detail::normalized_duration_literal<T, S>()>>();
+    } else if constexpr (AnyDate<T>) {
+      detail::check_point_literal<result.error()>();
     } else {
       detail::check_literal<result.error()>();
     }
