@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // iecoop/fmt.hpp — fmt support: fmt::format("{}", x) prints IEC values as ST writes them:
 // TIME as T#1s500ms, LTIME as LTIME#1ms500us, DATE as D#2026-11-23, DT as DT#2026-11-23-12:30:00
-// (and TOD, LDATE, LTOD, LDT likewise), BOOL as TRUE/FALSE, STRING and WSTRING as
-// their text (WSTRING in UTF-8). Integers and REALs accept fmt's number specs ("{:04x}").
+// (and TOD, LDATE, LTOD, LDT likewise), BOOL as TRUE/FALSE, STRING and WSTRING as their text
+// (WSTRING in UTF-8), an enumeration's component as its name where its components are
+// declared (else its value). Integers and REALs accept fmt's number specs ("{:04x}").
 // A block's var<>, in_out<> and output<>, and a property, print as their values.
 //
 // Optional: include it where you format, and link fmt (fmt::fmt or fmt::fmt-header-only).
@@ -19,6 +20,7 @@
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -55,6 +57,18 @@ struct fmt::formatter<iecoop::BOOL> : fmt::formatter<std::string_view> {
   template <class Context>
   auto format(iecoop::BOOL value, Context& ctx) const {
     return fmt::formatter<std::string_view>::format(value ? "TRUE" : "FALSE", ctx);
+  }
+};
+
+/// An enumeration: its component's name (`Run`) where its components are declared and the
+/// value is one, else its value (`12`).
+template <iecoop::Enumeration E>
+struct fmt::formatter<E, char> : fmt::formatter<std::string_view> {
+  template <class Context>
+  auto format(E value, Context& ctx) const {
+    char text[iecoop::max_text_length<E>];
+    const char* end = iecoop::to_text(text, value);
+    return fmt::formatter<std::string_view>::format(std::string_view(text, static_cast<std::size_t>(end - text)), ctx);
   }
 };
 

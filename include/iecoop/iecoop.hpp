@@ -16,6 +16,7 @@
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/literals.hpp>
 #include <iecoop/types/pointer.hpp>

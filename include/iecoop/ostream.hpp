@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // iecoop/ostream.hpp — operator<< for IEC values, printing them as ST writes them (TIME as
-// T#1s500ms, DATE as D#2026-11-23, BOOL as TRUE/FALSE, WSTRING in UTF-8). Optional: the core never needs
-// <ostream>; include this for iostreams, or for readable values in failed test assertions.
+// T#1s500ms, DATE as D#2026-11-23, BOOL as TRUE/FALSE, WSTRING in UTF-8, an enumeration's
+// component by its name). Optional: the core never needs <ostream>; include this for
+// iostreams, or for readable values in failed test assertions.
 #pragma once
 
 #include <cstddef>
@@ -14,6 +15,7 @@
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/subrange.hpp>
@@ -33,6 +35,13 @@ std::ostream& print_text(std::ostream& os, T value) {
 }  // namespace detail
 
 inline std::ostream& operator<<(std::ostream& os, BOOL value) { return detail::print_text(os, value); }
+
+/// An enumeration prints its component's name (`Run`) where its components are declared
+/// (enum_components) and the value is one, else its value (`12`).
+template <Enumeration E>
+std::ostream& operator<<(std::ostream& os, E value) {
+  return detail::print_text(os, value);
+}
 
 template <class Rep, integer_kind Kind>
 std::ostream& operator<<(std::ostream& os, integer<Rep, Kind> value) {

@@ -26,6 +26,7 @@
 #include <iecoop/fault.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
 
@@ -37,9 +38,10 @@ namespace iecoop::detail {
 template <class X>
 using argument_t = unwrapped_t<X>;
 
-/// An argument of an IEC type (a value, an intermediate result, or a variable of one).
+/// An argument of an IEC type (a value, an intermediate result, an enumeration's component, or
+/// a variable of one).
 template <class X>
-concept iec_argument = is_iec_value<argument_t<X>>::value;
+concept iec_argument = is_iec_value<argument_t<X>>::value || Enumeration<argument_t<X>>;
 
 /// A C++ number given to a generic function (`100`, `2.5`), which takes the IEC arguments' type.
 template <class X>
@@ -77,6 +79,13 @@ struct common_iec<A, B> {
 template <>
 struct common_iec<BOOL, BOOL> {
   using type = BOOL;
+};
+
+// Components of one enumeration (SEL, MUX, EQ, NE, and the ordering functions as C++ orders
+// them); an enumeration does not meet another type, not even its base type.
+template <Enumeration E>
+struct common_iec<E, E> {
+  using type = E;
 };
 
 // TIME and LTIME meet as LTIME, as in ST.

@@ -108,7 +108,9 @@ constexpr fnv1a& add_signed(fnv1a& hash, std::int64_t value) noexcept {
 template <class T>
 constexpr void add_type_name(fnv1a& hash) noexcept {
   using U = std::remove_cv_t<T>;
-  if constexpr (!iec_name<U>::value.empty()) {
+  if constexpr (std::is_enum_v<U>) {
+    hash.add(type_name<U>());  // an enumeration by its full name: its IEC name leaves out the namespaces
+  } else if constexpr (!iec_name<U>::value.empty()) {
     hash.add(iec_name<U>::value);  // BOOL, the integers, REAL, LREAL, TIME, LTIME
   } else if constexpr (iec_string_traits<U>::value) {
     hash.add(iec_string_traits<U>::wide ? "WSTRING(" : "STRING(").add_decimal(iec_string_traits<U>::capacity).add(")");

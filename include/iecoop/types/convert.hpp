@@ -18,6 +18,8 @@
 //   STRING  -> x         parses that text (surrounding spaces ignored); text that is not a
 //                        valid literal gives 0 / FALSE / T#0ms, as CODESYS does
 //   STRING <-> WSTRING   Latin-1 <-> UCS-2; characters above 255 become '?'
+//   enumeration -> x     its base type's value (TO_INT(eState)); -> STRING: the value ('10'), or
+//                        with {attribute 'to_string'} (enum_to_string) the component's name ('Run')
 #pragma once
 
 #include <cstddef>
@@ -32,6 +34,7 @@
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -68,6 +71,14 @@ constexpr auto as_elementary(const T& x) noexcept {
     return LINT(static_cast<std::int64_t>(x));
   } else if constexpr (cpp_integer<T>) {
     return ULINT(static_cast<std::uint64_t>(x));
+  } else if constexpr (std::is_enum_v<T>) {
+    // An enumeration converts as its base type's value.
+    require_enumeration<T>();
+    if constexpr (Enumeration<T>) {
+      return enum_base_t<T>(x);
+    } else {
+      return INT();
+    }
   } else {
     static_assert(dependent_false<T>,
                   "iecoop: no IEC conversion from this type; convert it to an IEC elementary type first");
@@ -188,6 +199,21 @@ template <class To, class From>
 [[nodiscard]] constexpr To convert(const From& from) noexcept {
   static_assert(AnyElementary<To>,
                 "iecoop: convert<To>: To must be an IEC elementary type (BOOL, INT, REAL, TIME, STRING<N>, ...)");
+  if constexpr (AnyString<To> && Enumeration<From> && enum_to_string<From>) {
+    // {attribute 'to_string'}: a component's name; a value that is no component as its number.
+    detail::require_components<From>();
+    const std::string_view name = component_name(from);
+    if (!name.empty()) {
+      using C = typename To::char_type;
+      C buffer[To::capacity() + 1]{};
+      std::size_t n = 0;
+      for (const char c : name) {
+        if (n == To::capacity()) break;
+        buffer[n++] = static_cast<C>(c);
+      }
+      return To(std::basic_string_view<C>(buffer, n));
+    }
+  }
   const auto x = detail::as_elementary(from);
   using X = std::remove_cv_t<decltype(x)>;
 

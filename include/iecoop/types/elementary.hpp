@@ -96,6 +96,13 @@ inline constexpr bool is_char_v = std::is_same_v<T, char> || std::is_same_v<T, w
 /// A built-in C++ integer type (not bool, not a character type).
 template <class T>
 concept cpp_integer = std::integral<T> && !std::is_same_v<T, bool> && !is_char_v<T>;
+
+/// The IEC integer type an enumeration stands on (its base type), void for any other type;
+/// <iecoop/types/enumeration.hpp> gives it for the IEC enumerations.
+template <class E>
+struct enum_base_of {
+  using type = void;
+};
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------
@@ -565,6 +572,13 @@ class integer {
       // clang-format on
     }
   }
+
+  /// From an IEC enumeration whose base type widens to this one (<iecoop/types/enumeration.hpp>):
+  /// `iVar := eState;` reads the component's value, as ST does (with 'strict' too).
+  template <class E>
+    requires(std::is_enum_v<E> && detail::widens_implicitly<typename detail::enum_base_of<E>::type, integer>)
+  constexpr integer(E component) noexcept  // implicit: ST reads a component as its base type's value
+      : value_(static_cast<Rep>(static_cast<std::underlying_type_t<E>>(component))) {}
 
   /// From another IEC integer type: implicit where IEC widens implicitly, explicit
   /// otherwise (keeps the low bytes, like DINT_TO_INT).

@@ -51,6 +51,7 @@ enum class parse_error : std::uint8_t {
   expected_separator,    ///< a date or time of day needs '-' between its fields, ':' in the time
   invalid_date,          ///< no such day: a month outside 1..12, a day past the month's end
   invalid_time_of_day,   ///< an hour above 23, a minute or second above 59
+  unknown_component,     ///< a name that is no component of the enumeration (parse_enum)
 };
 
 /// A one-line description of a parse error.
@@ -78,6 +79,7 @@ enum class parse_error : std::uint8_t {
     case parse_error::expected_separator: return "a '-' between the date's fields or a ':' in the time of day";
     case parse_error::invalid_date: return "no such date (a month outside 1..12, or a day past the month's end)";
     case parse_error::invalid_time_of_day: return "no such time of day (an hour above 23, a minute or second above 59)";
+    case parse_error::unknown_component: return "no component of the enumeration has this name";
   }
   return "unknown parse error";
 }
