@@ -194,13 +194,22 @@ constexpr std::string_view enum_value_spelling() noexcept {
   return signature.substr(start, end - start);
 }
 
-/// The name of the enumerator V (`Run`), or empty where V is no enumerator.
+constexpr bool is_identifier(std::string_view s) noexcept {
+  if (s.empty() || (s.front() >= '0' && s.front() <= '9')) return false;
+  for (const char c : s) {
+    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  }
+  return true;
+}
+
+/// The name of the enumerator V (`Run`), or empty where V is no enumerator: the spelling's last
+/// part, where it is an identifier (a cast, `(app::E_State)12`, ends in `E_State)12`).
 template <auto V>
 constexpr std::string_view enum_value_name() noexcept {
   constexpr std::string_view spelling = enum_value_spelling<V>();
-  if (spelling.empty() || spelling.front() == '(') return {};
   const std::size_t colons = spelling.rfind("::");
-  return colons == std::string_view::npos ? spelling : spelling.substr(colons + 2);
+  const std::string_view last = colons == std::string_view::npos ? spelling : spelling.substr(colons + 2);
+  return is_identifier(last) ? last : std::string_view{};
 }
 
 /// The name of the type E without its namespaces and enclosing classes (`E_State`).
@@ -329,7 +338,16 @@ struct listed_components {
   static constexpr W highest = high <= static_cast<W>(std::numeric_limits<U>::max()) - margin
                                    ? high + margin
                                    : static_cast<W>(std::numeric_limits<U>::max());
-  static constexpr bool whole_span = high - low <= static_cast<W>(component_span_checked);
+  // high - low <= component_span_checked, without computing high - low (it may not fit W).
+  static constexpr bool whole_span = low > std::numeric_limits<W>::max() - static_cast<W>(component_span_checked) ||
+                                     high <= low + static_cast<W>(component_span_checked);
+  static constexpr std::size_t between() noexcept {
+    if constexpr (whole_span) {
+      return static_cast<std::size_t>(high - low);
+    } else {
+      return 0;
+    }
+  }
 };
 
 template <auto... V>
@@ -337,7 +355,7 @@ constexpr bool none_left_out() noexcept {
   using L = listed_components<V...>;
   using W = typename L::W;
   constexpr std::size_t below = static_cast<std::size_t>(L::low - L::lowest);
-  constexpr std::size_t between = L::whole_span ? static_cast<std::size_t>(L::high - L::low) : std::size_t{0};
+  constexpr std::size_t between = L::between();
   constexpr std::size_t above = static_cast<std::size_t>(L::highest - L::high);
   return no_enumerator_unlisted<L, L::lowest, below>() && no_enumerator_unlisted<L, L::low, between>() &&
          no_enumerator_unlisted<L, L::high + (above > 0 ? W{1} : W{0}), above>();
