@@ -3,16 +3,17 @@
 // END_TYPE`, as C++ enums with an IEC integer base type, and CODESYS's attributes
 // 'qualified_only', 'strict' and 'to_string'.
 //
-//     TYPE E_State : (Idle, Run := 10, Fault);    enum E_State : INT::rep { Idle, Run = 10, Fault };
-//     END_TYPE                                    (Run and E_State::Run both name the component)
-//     {attribute 'qualified_only'}                enum class E_Mode : INT::rep { Off, Manual, Auto };
-//     TYPE E_Mode : (Off, Manual, Auto);          (only E_Mode::Manual)
+// clang-format off
+//     TYPE E_State : (Idle, Run := 10, Fault);   enum E_State : INT::rep { Idle, Run = 10, Fault };
+//     END_TYPE                                   (Run and E_State::Run both name the component)
+//     {attribute 'qualified_only'}               enum class E_Mode : INT::rep { Off, Manual, Auto };
+//     TYPE E_Mode : (Off, Manual, Auto);         (only E_Mode::Manual)
 //     END_TYPE
-//     {attribute 'strict'}                        template <> inline constexpr bool iecoop::enum_strict<E_Mode> = true;
-//     {attribute 'to_string'}                     template <> inline constexpr bool iecoop::enum_to_string<E_Mode> =
-//     true; (the component names, for TO_STRING,        template <> inline constexpr auto
-//     iecoop::enum_components<E_Mode> =
-//      printing, is_component and parse_enum)         iecoop::components<E_Mode::Off, E_Mode::Manual, E_Mode::Auto>{};
+//     {attribute 'strict'}                       template <> inline constexpr bool iecoop::enum_strict<E_Mode> = true;
+//     {attribute 'to_string'}                    template <> inline constexpr bool iecoop::enum_to_string<E_Mode> = true;
+//     (the names, for TO_STRING, printing,       template <> inline constexpr auto iecoop::enum_components<E_Mode> =
+//      is_component and parse_enum)                  iecoop::components<E_Mode::Off, E_Mode::Manual, E_Mode::Auto>{};
+// clang-format on
 //
 // * The C++ base type is the IEC base type's representation (`INT::rep`, `BYTE::rep`); an enum
 //   without a base type, or with a `char` or `bool` one, is no IEC enumeration. An unsigned base
@@ -22,8 +23,9 @@
 //   rejects. Without 'strict', arithmetic on components computes in the base type, as in ST;
 //   with 'strict' it does not compile.
 // * The component names are not reflected over a range of values: `components<...>` lists the
-//   components, each listed value's name is read from the compiler's spelling of it, and the list
-//   is checked against the enumerators next to it (docs/design.md, "Enumeration names").
+//   components, each listed value's name is read from the compiler's spelling of it, and the
+//   list is checked against the enumerators next to it (docs/design.md, "Enumeration names are
+//   listed, and spelled by the compiler").
 #pragma once
 
 #include <cstddef>
