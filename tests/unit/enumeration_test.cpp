@@ -114,6 +114,7 @@ struct FB_Cycle : function_block<FB_Cycle> {
   BOOL bError;                           //           bError : BOOL; END_VAR
   var<E_State> eState{Idle};             // VAR eState : E_State; END_VAR
   retain<E_Mode> eMode{E_Mode::Manual};  // VAR RETAIN eMode : E_Mode := E_Mode.Manual; END_VAR
+  INT iState;                            // VAR_OUTPUT iState : INT; END_VAR
   using VAR_INPUT = pins<&FB_Cycle::bStart, &FB_Cycle::bError>;
   void body() {
     switch (eState) {  // CASE eState OF
@@ -127,6 +128,20 @@ struct FB_Cycle : function_block<FB_Cycle> {
         if (!bError) eState = Idle;
         break;
     }
+    iState = eState;  // iState := eState;  (a VAR of an enumeration reads as its base type)
+  }
+};
+
+// Enumerations as pins: VAR_INPUT eCmd : E_Mode; VAR_OUTPUT eOut : E_State; iOut : INT;
+struct FB_Pins : function_block<FB_Pins> {
+  E_Mode eCmd = E_Mode::Off;
+  E_State eOut = Idle;
+  INT iOut;
+  using VAR_INPUT = pins<&FB_Pins::eCmd>;
+  using VAR_OUTPUT = pins<&FB_Pins::eOut, &FB_Pins::iOut>;
+  void body() {
+    eOut = eCmd == E_Mode::Auto ? Run : Idle;
+    iOut = eOut;  // iOut := eOut;
   }
 };
 
@@ -397,6 +412,17 @@ TEST_SUITE("enumerations") {
     CHECK(EQ(fb.eMode, E_Mode::Auto));
   }
 
+  TEST_CASE("enumerations as named inputs and outputs of a call") {
+    FB_Pins fb;
+    E_State eSeen = Fault;
+    INT iSeen;
+    fb("eCmd"_ = E_Mode::Auto, "eOut"_ >> eSeen, "iOut"_ >> iSeen);
+    CHECK(eSeen == Run);
+    CHECK(iSeen == 10);
+    fb("eCmd"_ = E_Mode::Manual, "eOut"_ >> eSeen);
+    CHECK(eSeen == Idle);
+  }
+
   TEST_CASE("CASE on an enumeration: a state machine as a block, its state RETAIN") {
     FB_Cycle fb;
     fb();
@@ -405,6 +431,9 @@ TEST_SUITE("enumerations") {
     CHECK(fb.eState == Run);
     fb("bError"_ = TRUE);
     CHECK(fb.eState == Fault);
+    CHECK(fb.iState == 11);
+    const INT iRead = fb.eState;  // from outside too
+    CHECK(iRead == 11);
     fb("bError"_ = FALSE);
     CHECK(fb.eState == Idle);
     CHECK(fb.eMode == E_Mode::Manual);

@@ -151,6 +151,15 @@ struct widening_conversion<Derived, T> {
     return static_cast<const Derived&>(*this).get();
   }
 };
+/// A wrapper of an IEC enumeration reads into its base type (`iVal := eState;` for a VAR eState):
+/// one conversion, not a template, so that `switch (eState)` still finds the one to the enum.
+template <class Derived, class T>
+  requires(std::is_enum_v<T> && !std::is_void_v<typename enum_base_of<T>::type>)
+struct widening_conversion<Derived, T> {
+  constexpr operator typename enum_base_of<T>::type() const {  // implicit: reads as the variable
+    return static_cast<const Derived&>(*this).get();
+  }
+};
 
 /// What `w->m` reaches through a wrapper of T: T's own `->` where it has one (an interface
 /// variable, `ip->M()`), else T's members (`pos->x` for a STRUCT).
