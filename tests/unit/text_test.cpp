@@ -2,7 +2,14 @@
 // literals, REAL text, and formatting back to IEC text.
 #include "iecoop_test.hpp"
 
+#include <fmt/format.h>
+
+#include <iecoop/fmt.hpp>
+
+#include <algorithm>
 #include <cstdint>
+#include <sstream>
+#include <string>
 #include <string_view>
 
 using namespace iecoop;
@@ -205,8 +212,41 @@ TEST_SUITE("IEC literal text") {
     CHECK(show(FALSE) == "FALSE");
     CHECK(show(REAL(1.5f)) == "1.5");
     CHECK(show(LREAL(-0.1)) == "-0.1");
-    CHECK(show(TIME::max()).size() == max_text_length<TIME>);
+    CHECK(show(TIME::max()).size() < max_text_length<TIME>);  // not the longest text: see below
     CHECK(show(LTIME::max()).size() == max_text_length<LTIME>);
+  }
+
+  TEST_CASE("no TIME or LTIME text is longer than max_text_length, the longest included") {
+    // The longest texts are not those of the largest values: every unit with two digits.
+    static_assert(max_text_length<TIME> == 19);
+    static_assert(max_text_length<LTIME> == 37);
+    char text[64];
+    const auto length = [&text](auto value) { return static_cast<std::size_t>(to_text(text, value) - text); };
+    const TIME tLongest = TIME::from_ticks(11U * 86'400'000U + 86'399'999U);
+    CHECK(std::string_view(text, length(tLongest)) == "T#11d23h59m59s999ms");
+    CHECK(length(tLongest) == max_text_length<TIME>);
+    CHECK(std::string(TIME_TO_STRING(tLongest).view()) == "T#11d23h59m59s999ms");
+    std::ostringstream os;  // operator<< and fmt size their buffers from max_text_length too
+    os << tLongest;
+    CHECK(os.str() == "T#11d23h59m59s999ms");
+    CHECK(fmt::format("{}", tLongest) == "T#11d23h59m59s999ms");
+    // Every day count with the longest time of day, and 2,000,000 pseudo-random values of each.
+    std::size_t longest = 0;
+    for (std::uint32_t d = 0; d <= 49; ++d) {
+      const std::uint64_t ms = std::uint64_t{d} * 86'400'000U + 86'399'999U;
+      if (ms <= 0xFFFF'FFFFU) longest = std::max(longest, length(TIME::from_ticks(static_cast<std::uint32_t>(ms))));
+    }
+    std::uint64_t x = 0x9E37'79B9'7F4A'7C15ULL;
+    std::size_t longest_ltime = 0;
+    for (int i = 0; i < 2'000'000; ++i) {
+      x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+      longest = std::max(longest, length(TIME::from_ticks(static_cast<std::uint32_t>(x >> 32))));
+      longest_ltime = std::max(longest_ltime, length(LTIME::from_ticks(x)));
+    }
+    CHECK(longest == max_text_length<TIME>);
+    CHECK(longest_ltime <= max_text_length<LTIME>);
+    CHECK(length(LTIME::from_ticks(99'999ULL * 86'400'000'000'000ULL + 86'399'999'999'999ULL)) <=
+          max_text_length<LTIME>);
   }
 
   TEST_CASE("formatting and parsing round-trip") {

@@ -457,6 +457,27 @@ template <AnyReal T>
 // Formatting: to_text(out, value) writes the IEC text of `value` to `out` (which must have
 // room for max_text_length<T> characters) and returns the end. No terminating NUL.
 
+namespace detail {
+constexpr std::size_t decimal_digits(std::uint64_t v) noexcept {
+  std::size_t n = 1;
+  for (; v >= 10; v /= 10) ++n;
+  return n;
+}
+/// The longest text write_duration writes for durations up to `max_ns`, by construction: each
+/// unit with the most digits it can have — the first unit's count of the largest value, any
+/// other unit's count below its limit (T#11d23h59m59s999ms is longer than TIME's largest
+/// value, T#49d17h2m47s295ms).
+constexpr std::size_t longest_duration_text(std::uint64_t max_ns, std::size_t smallest_unit) noexcept {
+  std::size_t n = 0;
+  for (std::size_t u = 0; u <= smallest_unit; ++u) {
+    std::uint64_t largest = max_ns / duration_units[u].ns;
+    if (duration_units[u].limit != 0 && largest >= duration_units[u].limit) largest = duration_units[u].limit - 1;
+    n += decimal_digits(largest) + duration_units[u].name.size();
+  }
+  return n;
+}
+}  // namespace detail
+
 /// The longest text to_text() writes for a T.
 template <class T>
 inline constexpr std::size_t max_text_length = 0;
@@ -464,10 +485,12 @@ template <AnyInteger T>
 inline constexpr std::size_t max_text_length<T> = std::numeric_limits<typename T::rep>::digits10 + 2;
 template <>
 inline constexpr std::size_t max_text_length<BOOL> = 5;  // FALSE
-template <>
-inline constexpr std::size_t max_text_length<TIME> = 18;  // T#49d17h2m47s295ms
-template <>
-inline constexpr std::size_t max_text_length<LTIME> = 37;  // LTIME#213503d23h34m33s709ms551us615ns
+template <>                                              // 19: T#11d23h59m59s999ms
+inline constexpr std::size_t max_text_length<TIME> =
+    2 + detail::longest_duration_text(std::uint64_t{std::numeric_limits<std::uint32_t>::max()} * 1'000'000, 4);
+template <>  // 37: LTIME#213503d23h34m33s709ms551us615ns
+inline constexpr std::size_t max_text_length<LTIME> =
+    6 + detail::longest_duration_text(std::numeric_limits<std::uint64_t>::max(), 6);
 template <>
 inline constexpr std::size_t max_text_length<REAL> = 24;
 template <>
