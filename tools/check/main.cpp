@@ -95,8 +95,20 @@ int read_options(int argc, char** argv, options& result) {
   return -1;
 }
 
+/// A header precompiled for the build (CMake's cmake_pch.hxx, or any header beside which a
+/// .gch or .pch lies): libclang cannot read GCC's precompiled form, nor another Clang's.
+bool precompiled_header(const std::string& header) {
+  const auto ends_with = [&header](std::string_view end) {
+    return header.size() >= end.size() && header.compare(header.size() - end.size(), end.size(), end) == 0;
+  };
+  return ends_with("cmake_pch.hxx") || ends_with("cmake_pch.hxx.pch") || access((header + ".gch").c_str(), F_OK) == 0 ||
+         access((header + ".pch").c_str(), F_OK) == 0;
+}
+
 /// The compiler's arguments as libclang takes them: without the compiler, the output, the
-/// dependency files, and with no warning as an error (only errors in the code count).
+/// dependency files and a precompiled header (the sources include what they use; the parse
+/// reads the headers themselves), and with no warning as an error (only errors in the code
+/// count).
 std::vector<std::string> parser_arguments(const std::vector<std::string>& compiler_arguments) {
   std::vector<std::string> result;
   for (std::size_t i = 0; i < compiler_arguments.size(); ++i) {
@@ -105,6 +117,19 @@ std::vector<std::string> parser_arguments(const std::vector<std::string>& compil
       ++i;
       continue;
     }
+    // GCC: -include <pch header>; Clang: -Xclang -include-pch -Xclang <pch> and
+    // -Xclang -include -Xclang <pch header>.
+    if (a == "-include" && i + 1 < compiler_arguments.size() && precompiled_header(compiler_arguments[i + 1])) {
+      ++i;
+      continue;
+    }
+    if (a == "-Xclang" && i + 3 < compiler_arguments.size() &&
+        (compiler_arguments[i + 1] == "-include-pch" || compiler_arguments[i + 1] == "-include") &&
+        compiler_arguments[i + 2] == "-Xclang" && precompiled_header(compiler_arguments[i + 3])) {
+      i += 3;
+      continue;
+    }
+    if (a == "-Winvalid-pch") continue;
     if (a == "-c" || a == "-MD" || a == "-MMD" || a.rfind("-Werror", 0) == 0 || a == "-pedantic-errors") continue;
     result.push_back(a);
   }
