@@ -249,6 +249,26 @@ TEST_SUITE("IEC literal text") {
           max_text_length<LTIME>);
   }
 
+  TEST_CASE("a fraction counts as a whole: exact sums are taken, nothing finer is dropped") {
+    // Each digit alone is not a whole number of ns, the sum is: 0.000000000005 d = 432 ns.
+    CHECK(parse_ltime("LTIME#1.000000000005d").value_or({}) == LTIME::from_ticks(86'400'000'000'432ULL));
+    CHECK(parse_ltime("LTIME#0.5us").value_or({}) == LTIME::from_ticks(500));
+    CHECK(parse_time("T#1.25s").value_or({}) == TIME::from_ticks(1250));
+    CHECK(parse_time("T#1.000_000s").value_or({}) == TIME::from_ticks(1000));  // trailing zeros
+    // Finer than the type resolves, however far back the digit stands.
+    CHECK(parse_ltime("LTIME#1.05ns").error() == parse_error::too_precise);
+    CHECK(parse_time("T#1.00000000001s").error() == parse_error::too_precise);
+    CHECK(parse_time("T#1.0001s").error() == parse_error::too_precise);
+    CHECK(parse_ltime("LTIME#1.0000000000000001d").error() == parse_error::too_precise);
+  }
+
+  TEST_CASE("a REAL has one sign") {
+    CHECK(parse_real<REAL>("+-1.5").error() == parse_error::expected_digit);
+    CHECK(parse_real<LREAL>("++1.5").error() == parse_error::expected_digit);
+    CHECK(parse_real<REAL>("+1.5").value_or({}) == 1.5f);
+    CHECK(parse_real<REAL>("-1.5").value_or({}) == -1.5f);
+  }
+
   TEST_CASE("formatting and parsing round-trip") {
     char text[64];
     for (const std::uint32_t ms : {0u, 1u, 999u, 1000u, 59999u, 3600000u, 86399999u, 4294967295u}) {

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <string_view>
 #include <system_error>
 #include <type_traits>
@@ -219,20 +220,37 @@ constexpr parse_result<std::uint64_t> parse_duration_body(std::string_view s, st
       return {parse_error::unit_overflow, offset + number_at};
     if (!mul_add(whole.value, u.ns, total, total)) return {parse_error::out_of_range, offset + number_at};
     if (has_fraction) {
-      // Each fraction digit adds digit * ns / 10^k, which must be a whole number of ns.
-      std::uint64_t step = u.ns;
+      // The fraction D / 10^n of the unit (trailing zeros dropped) adds ns * D / 10^n, which
+      // must be a whole number of nanoseconds: the sum, not each digit (LTIME#1.000000000005d
+      // is 86400000000432 ns). In lowest terms D' / g, that is: g divides the unit's ns.
+      std::uint64_t digits = 0;
+      std::uint64_t scale = 1;
+      std::size_t significant = 0;  // digits up to the last non-zero one
+      std::size_t seen = 0;
       std::size_t k = number_at;
       while (k < s.size() && s[k] != '.') ++k;
-      for (++k; k < unit_at; ++k) {
-        if (s[k] == '_') continue;
-        const auto digit = static_cast<std::uint64_t>(s[k] - '0');
-        if (step % 10 != 0) {
-          if (digit != 0) return {parse_error::too_precise, offset + k};
-          step = 0;
-          continue;
+      for (std::size_t j = k + 1; j < unit_at; ++j) {
+        if (s[j] != '_') {
+          ++seen;
+          if (s[j] != '0') significant = seen;
         }
-        step /= 10;
-        if (!mul_add(digit, step, total, total)) return {parse_error::out_of_range, offset + k};
+      }
+      // No unit is finer than 1 ns, and 10^15 divides no unit's length: beyond 14 significant
+      // digits a fraction is always too precise.
+      if (significant > 14) return {parse_error::too_precise, offset + number_at};
+      seen = 0;
+      for (std::size_t j = k + 1; j < unit_at && seen < significant; ++j) {
+        if (s[j] == '_') continue;
+        ++seen;
+        digits = digits * 10 + static_cast<std::uint64_t>(s[j] - '0');
+        scale *= 10;
+      }
+      if (digits != 0) {
+        const std::uint64_t common = std::gcd(digits, scale);
+        const std::uint64_t denominator = scale / common;
+        if (u.ns % denominator != 0) return {parse_error::too_precise, offset + number_at};
+        if (!mul_add(u.ns / denominator, digits / common, total, total))
+          return {parse_error::out_of_range, offset + number_at};
       }
       had_fraction = true;
     }
@@ -445,6 +463,9 @@ template <AnyReal T>
   }
   const char* first = buffer;
   if (n > 0 && buffer[0] == '+') ++first;  // from_chars rejects a leading '+'
+  // ... but takes a '-' after it: "+-1.5" is no number.
+  if (first != buffer && first < buffer + n && (*first == '-' || *first == '+'))
+    return {parse_error::expected_digit, offset + 1};
   rep value{};
   const auto [end, ec] = std::from_chars(first, buffer + n, value, std::chars_format::general);
   if (ec == std::errc::result_out_of_range) return {parse_error::out_of_range, offset};
