@@ -2,17 +2,32 @@
 #   EXPECTED=<file>  : must exit 0, print exactly the file's content, and nothing on stderr.
 #   EXPECT_ERROR=<re>: must exit 2, print nothing on stdout and one line matching <re> on stderr.
 #   CRLF=ON          : feed the stimulus with CRLF line ends (the trace keeps LF).
+#   CR=ON            : feed it with a CR alone at each line end (classic Mac OS).
+#   STIMULUS may be a directory (standard input that cannot be read) or /dev/zero with
+#   LIMIT_AS=<bytes>: the tool then runs under `prlimit --as`, so reading never ends but
+#   memory does.
 cmake_minimum_required(VERSION 3.25)
 string(REPLACE "|" ";" ARGS "${ARGS}")
 set(input "${STIMULUS}")
-if(CRLF)
+if(CRLF OR CR)
   file(READ "${STIMULUS}" text)
-  string(REPLACE "\n" "\r\n" text "${text}")
   get_filename_component(name "${STIMULUS}" NAME)
-  set(input "${WORK_DIR}/${name}.crlf")
+  set(input "${WORK_DIR}/${name}")
+  if(CRLF)
+    string(REPLACE "\n" "\r\n" text "${text}")
+    string(APPEND input ".crlf")
+  endif()
+  if(CR)
+    string(REPLACE "\n" "\r" text "${text}")
+    string(APPEND input ".cr")
+  endif()
   file(WRITE "${input}" "${text}")
 endif()
-execute_process(COMMAND "${TOOL}" ${ARGS} INPUT_FILE "${input}"
+set(command "${TOOL}" ${ARGS})
+if(LIMIT_AS)
+  set(command prlimit --as=${LIMIT_AS} -- ${command})
+endif()
+execute_process(COMMAND ${command} INPUT_FILE "${input}"
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 if(DEFINED EXPECTED)
   file(READ "${EXPECTED}" expected)

@@ -20,6 +20,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -226,15 +227,16 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
   const std::vector<input_pin<B>> inputs = input_pins<B>(is_counter, std::make_index_sequence<inputs_of<B>::size>{});
   const std::vector<output_pin<B>> outputs = output_pins<B>(std::make_index_sequence<outputs_of<B>::size>{});
 
-  // Lines, without their line breaks (LF or CRLF); a last line break ends the file.
+  // A UTF-8 byte order mark (spreadsheets write one) is no part of the header.
+  if (stimulus.starts_with("\xEF\xBB\xBF")) stimulus.remove_prefix(3);
+  // Lines, without their line breaks (LF, CRLF, or a CR alone); a last line break ends the file.
   std::vector<std::string_view> lines;
   for (std::size_t start = 0; start < stimulus.size();) {
-    std::size_t end = stimulus.find('\n', start);
+    std::size_t end = stimulus.find_first_of("\r\n", start);
     if (end == std::string_view::npos) end = stimulus.size();
-    std::string_view line = stimulus.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines.push_back(line);
+    lines.push_back(stimulus.substr(start, end - start));
     start = end + 1;
+    if (end < stimulus.size() && stimulus[end] == '\r' && start < stimulus.size() && stimulus[start] == '\n') ++start;
   }
   if (lines.empty()) throw input_error{"line 1: the stimulus is empty; it needs the header cycle,time_ms,<inputs...>"};
 
@@ -355,8 +357,26 @@ constexpr std::string_view usage =
     "  NAME:    codesys (default), iec, matiec\n"
     "  stimulus: header cycle,time_ms,<inputs...>; BOOL 0/1, INT decimal, TIME as <pin>_ms\n";
 
+/// The message with every control character shown as \xNN: a field's invisible bytes (a tab,
+/// an escape sequence) appear in the error instead of acting on the terminal.
+std::string visible(std::string_view message) {
+  std::string result;
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7F) {
+      constexpr std::string_view hex = "0123456789ABCDEF";
+      result += "\\x";
+      result += hex[byte >> 4];
+      result += hex[byte & 0xF];
+    } else {
+      result += c;
+    }
+  }
+  return result;
+}
+
 int fail(const std::string& message) {
-  std::cerr << "iecoop-replay: " << message << '\n';
+  std::cerr << "iecoop-replay: " << visible(message) << '\n';
   return exit_bad_input;
 }
 
@@ -402,8 +422,14 @@ int main(int argc, char** argv) {
     return fail("unknown FB \"" + *fb + "\"; use one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS");
   }
 
-  const std::string stimulus{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
   try {
+    std::string stimulus;
+    char chunk[65536];
+    while (std::cin.read(chunk, sizeof chunk) || std::cin.gcount() > 0) {
+      stimulus.append(chunk, static_cast<std::size_t>(std::cin.gcount()));
+    }
+    // std::cin reads through stdio (synchronised): a read error there is only ferror(stdin).
+    if (std::cin.bad() || std::ferror(stdin) != 0) return fail("could not read the stimulus from standard input");
     std::optional<std::string> trace;
     if (dialect == codesys::dialect::name) {
       trace = replay_in<codesys::dialect>(*fb, stimulus);
@@ -420,6 +446,8 @@ int main(int argc, char** argv) {
     }
   } catch (const input_error& error) {
     return fail(error.message);
+  } catch (const std::bad_alloc&) {
+    return fail("the stimulus does not fit in memory");
   }
   return 0;
 }
