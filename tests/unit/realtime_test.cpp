@@ -192,13 +192,24 @@ TEST_CASE("a watchdog fault in real time stops the application and the run") {
 }
 
 #if defined(__linux__)
-TEST_CASE("the thread's scheduling policy is as before after a run that asked for SCHED_FIFO") {
+TEST_CASE("SCHED_FIFO is kept between runs in slices and given back when the runner ends") {
   const int before = sched_getscheduler(0);
   application plc{task<TICK_PRG>{"Tick", cyclic{"T#5ms"_iec}, 0}};
   plc.start();
   std::atomic<bool> stop{false};
-  realtime_runner runner{plc, realtime_options{.fifo = true, .fifo_priority = 10}};
-  CHECK(runner.run(stop, "T#10ms"_iec) == run_end::time_elapsed);
-  CHECK(sched_getscheduler(0) == before);  // restored when FIFO was granted (as root), untouched otherwise
+  {
+    realtime_runner runner{plc, realtime_options{.fifo = true, .fifo_priority = 10}};
+    CHECK(runner.run(stop, "T#10ms"_iec) == run_end::time_elapsed);
+    // Between two slices (printing, say) the thread keeps the policy it ran under: SCHED_FIFO
+    // where it was granted (as root), the old one otherwise.
+    CHECK(sched_getscheduler(0) == (runner.fifo_active() ? SCHED_FIFO : before));
+    CHECK(runner.run(stop, "T#10ms"_iec) == run_end::time_elapsed);
+    CHECK(sched_getscheduler(0) == (runner.fifo_active() ? SCHED_FIFO : before));
+    runner.release_scheduling();
+    CHECK_FALSE(runner.fifo_active());
+    CHECK(sched_getscheduler(0) == before);
+    CHECK(runner.run(stop, "T#10ms"_iec) == run_end::time_elapsed);  // asks again
+  }
+  CHECK(sched_getscheduler(0) == before);  // the runner's end gives the old policy back
 }
 #endif

@@ -13,9 +13,12 @@
 // priority goes first, and a cycle that is under way finishes before another starts (there
 // is no preemption, so blocks and globals need no locks; a long low-priority cycle delays a
 // high-priority one, which shows in its jitter). With `fifo`, the thread asks for
-// SCHED_FIFO scheduling for the duration of run() (and, with `lock_memory`, locks the
-// process's memory); without the privilege it runs as an ordinary thread (fifo_active()
-// tells). For Linux and other POSIX systems; not part of <iecoop/iecoop.hpp>.
+// SCHED_FIFO scheduling at the first run() and keeps it until the runner is destroyed (or
+// release_scheduling() is called), so that a program running it in slices — run for a while,
+// print, run again — never drops to an ordinary thread in between; with `lock_memory` it also
+// locks the process's memory. Without the privilege it runs as an ordinary thread
+// (fifo_active() tells). Destroy the runner in the thread that ran it. For Linux and other
+// POSIX systems; not part of <iecoop/iecoop.hpp>.
 #pragma once
 
 #include <algorithm>
@@ -63,6 +66,10 @@ template <class App>
 class realtime_runner {
  public:
   explicit realtime_runner(App& app, realtime_options options = {}) noexcept : app_(app), options_(options) {}
+  realtime_runner(const realtime_runner&) = delete;
+  realtime_runner& operator=(const realtime_runner&) = delete;
+  /// Gives the thread its scheduling policy from before the first run() back.
+  ~realtime_runner() { release_scheduling(); }
 
   /// Runs until `stop` is set, `duration` of steady time has passed, or the application
   /// stops running. Call it again to go on: the application's clock follows the steady clock
@@ -70,45 +77,40 @@ class realtime_runner {
   /// in slices, printing in between, say: the time between two calls counts as time passed,
   /// and releases due in it are late (or, later than an interval, omitted) as on a busy PLC.
   run_end run(const std::atomic<bool>& stop, LTIME duration = LTIME::max()) {
-    const scheduling_scope scheduling(*this);
+    if (!scheduling_asked_) acquire_scheduling();
     return run_cycles(stop, duration);
   }
 
-  /// TRUE if the last run() ran under SCHED_FIFO (asked for with options.fifo, and permitted).
+  /// TRUE while the runner holds SCHED_FIFO for its thread (asked for with options.fifo, and
+  /// permitted): from the first run() until release_scheduling() or the runner's end.
   [[nodiscard]] bool fifo_active() const noexcept { return fifo_active_; }
 
- private:
-  // SCHED_FIFO for the duration of run(), if asked for and permitted; the thread's previous
-  // policy is restored afterwards.
-  class scheduling_scope {
-   public:
-    explicit scheduling_scope(realtime_runner& runner) noexcept : runner_(runner) {
-      runner_.fifo_active_ = false;
+  /// Gives the thread its scheduling policy from before the first run() back (the next run()
+  /// asks for SCHED_FIFO again). Call it in the thread that ran the runner.
+  void release_scheduling() noexcept {
 #if defined(__linux__)
-      if (!runner_.options_.fifo) return;
-      policy_ = sched_getscheduler(0);
-      if (policy_ < 0 || sched_getparam(0, &previous_) != 0) return;
-      sched_param param{};
-      param.sched_priority = runner_.options_.fifo_priority;
-      runner_.fifo_active_ = sched_setscheduler(0, SCHED_FIFO, &param) == 0;
-      if (runner_.fifo_active_ && runner_.options_.lock_memory) (void)mlockall(MCL_CURRENT | MCL_FUTURE);
+    if (fifo_active_) (void)sched_setscheduler(0, previous_policy_, &previous_param_);
 #endif
-    }
-    ~scheduling_scope() {
-#if defined(__linux__)
-      if (runner_.fifo_active_) (void)sched_setscheduler(0, policy_, &previous_);
-#endif
-    }
-    scheduling_scope(const scheduling_scope&) = delete;
-    scheduling_scope& operator=(const scheduling_scope&) = delete;
+    fifo_active_ = false;
+    scheduling_asked_ = false;
+  }
 
-   private:
-    realtime_runner& runner_;
+ private:
+  // SCHED_FIFO from the first run() on, if asked for and permitted; the thread's previous
+  // policy is kept for release_scheduling().
+  void acquire_scheduling() noexcept {
+    scheduling_asked_ = true;
+    fifo_active_ = false;
 #if defined(__linux__)
-    int policy_ = SCHED_OTHER;
-    sched_param previous_{};
+    if (!options_.fifo) return;
+    previous_policy_ = sched_getscheduler(0);
+    if (previous_policy_ < 0 || sched_getparam(0, &previous_param_) != 0) return;
+    sched_param param{};
+    param.sched_priority = options_.fifo_priority;
+    fifo_active_ = sched_setscheduler(0, SCHED_FIFO, &param) == 0;
+    if (fifo_active_ && options_.lock_memory) (void)mlockall(MCL_CURRENT | MCL_FUTURE);
 #endif
-  };
+  }
 
   run_end run_cycles(const std::atomic<bool>& stop, LTIME duration) {
     // The application's clock follows the steady clock from the first run() on; a run() that
@@ -184,7 +186,12 @@ class realtime_runner {
 
   App& app_;
   realtime_options options_;
+  bool scheduling_asked_ = false;
   bool fifo_active_ = false;
+#if defined(__linux__)
+  int previous_policy_ = SCHED_OTHER;
+  sched_param previous_param_{};
+#endif
   bool mapped_ = false;
   std::chrono::steady_clock::time_point origin_{};
   LTIME base_{};
