@@ -271,11 +271,20 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
   // The trace's header: cycle, time, the inputs as given, the outputs, the extra columns.
   std::string trace = "cycle,time_ms";
   for (std::size_t c = 2; c < header->size(); ++c) {
-    if (column_input[c] >= 0) trace += "," + (*header)[c];
+    if (column_input[c] >= 0) {
+      trace += ',';
+      trace += (*header)[c];
+    }
   }
-  for (const output_pin<B>& output : outputs) trace += "," + output.column;
+  for (const output_pin<B>& output : outputs) {
+    trace += ',';
+    trace += output.column;
+  }
   for (std::size_t c = 2; c < header->size(); ++c) {
-    if (column_input[c] < 0) trace += "," + (*header)[c];
+    if (column_input[c] < 0) {
+      trace += ',';
+      trace += (*header)[c];
+    }
   }
   trace += '\n';
 
@@ -316,13 +325,25 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
     }
     block();
 
-    trace += (*fields)[0] + "," + (*fields)[1];
+    // Appends, not `a + "," + b`: GCC 12 -O3 warns of a false overlap in operator+ (-Wrestrict).
+    trace += (*fields)[0];
+    trace += ',';
+    trace += (*fields)[1];
     for (std::size_t c = 2; c < header->size(); ++c) {
-      if (column_input[c] >= 0) trace += "," + (*fields)[c];
+      if (column_input[c] >= 0) {
+        trace += ',';
+        trace += (*fields)[c];
+      }
     }
-    for (const output_pin<B>& output : outputs) trace += "," + output.read(block);
+    for (const output_pin<B>& output : outputs) {
+      trace += ',';
+      trace += output.read(block);
+    }
     for (std::size_t c = 2; c < header->size(); ++c) {
-      if (column_input[c] < 0) trace += "," + (*fields)[c];
+      if (column_input[c] < 0) {
+        trace += ',';
+        trace += (*fields)[c];
+      }
     }
     trace += '\n';
   }

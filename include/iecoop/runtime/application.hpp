@@ -285,16 +285,23 @@ class application {
   void load(start_mode mode) {
     // The retain memory holds this application's last stop(): never older than the storage,
     // which may have failed to save it. A new application (a new process) has none yet.
-    std::size_t size = retain_size_;
-    if (size == 0 && storage_.object != nullptr) {
-      size = storage_.load(storage_.object, retain_memory_);
-      if (size > retain_memory_.size()) size = 0;
+    // (Without retain memory there is nothing to read: GCC 12 -O3 would warn of reads from the
+    // empty array on the paths it cannot rule out.)
+    std::size_t size = 0;
+    if constexpr (retain_bytes > 0) {
+      size = retain_size_;
+      if (size == 0 && storage_.object != nullptr) {
+        size = storage_.load(storage_.object, retain_memory_);
+        if (size > retain_memory_.size()) size = 0;
+      }
     }
     const retain_kinds keep =
         size == 0 ? retain_kinds::none
                   : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
     construct(!keep.contains(retain_kind::retain));
-    if (size > 0) restore(keep, size);
+    if constexpr (retain_bytes > 0) {
+      if (size > 0) restore(keep, size);
+    }
     scheduler_.restart();
   }
 
