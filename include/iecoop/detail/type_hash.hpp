@@ -71,15 +71,19 @@ constexpr std::string_view type_signature() noexcept {
 #endif
 }
 
-/// The compiler's spelling of T, cut out of "... [with T = <name>; ...]" (GCC) or
-/// "... [T = <name>]" (Clang).
+/// The compiler's spelling of the template argument `parameter` (`"T = "`) in a function's
+/// signature: cut out of "... [with T = <it>; ...]" (GCC) or "... [T = <it>]" (Clang).
+constexpr std::string_view argument_spelling(std::string_view signature, std::string_view parameter) noexcept {
+  const std::size_t start = signature.find(parameter) + parameter.size();
+  const std::size_t semicolon = signature.find(';', start);
+  const std::size_t end = semicolon != std::string_view::npos ? semicolon : signature.rfind(']');
+  return signature.substr(start, end - start);
+}
+
+/// The compiler's spelling of T.
 template <class T>
 constexpr std::string_view type_name() noexcept {
-  constexpr std::string_view signature = type_signature<T>();
-  constexpr std::size_t start = signature.find("T = ") + 4;
-  constexpr std::size_t semicolon = signature.find(';', start);
-  constexpr std::size_t end = semicolon != std::string_view::npos ? semicolon : signature.rfind(']');
-  return signature.substr(start, end - start);
+  return argument_spelling(type_signature<T>(), "T = ");
 }
 
 template <class T>

@@ -219,6 +219,15 @@ constexpr void split_daytime(std::uint64_t ns, H& hour, Mi& minute, S& second, M
   store_component(millisecond, ms % 1000);
 }
 
+/// CONCAT_TOD and CONCAT_LTOD: the point P of a time of day, or a fault with `invalid`.
+template <class P, class H, class Mi, class S, class Ms>
+constexpr P concat_daytime(const H& hour, const Mi& minute, const S& second, const Ms& millisecond,
+                           const char* invalid) {
+  time_components c;
+  add_daytime(c, component_value(hour), component_value(minute), component_value(second), component_value(millisecond));
+  return point_of<P>(c, invalid);
+}
+
 }  // namespace detail
 
 /// CONCAT_DATE(YEAR, MONTH, DAY): the DATE; invalid or out of range (1970-01-01 ..
@@ -236,10 +245,8 @@ template <class Y, class M, class D>
 template <class H, class Mi, class S, class Ms>
 [[nodiscard]] constexpr TOD CONCAT_TOD(const H& hour, const Mi& minute, const S& second, const Ms& millisecond) {
   detail::check_time_components<H, Mi, S, Ms>();
-  detail::time_components c;
-  detail::add_daytime(c, detail::component_value(hour), detail::component_value(minute),
-                      detail::component_value(second), detail::component_value(millisecond));
-  return detail::point_of<TOD>(c, "CONCAT_TOD: no such time of day; the result is TOD#00:00:00");
+  return detail::concat_daytime<TOD>(hour, minute, second, millisecond,
+                                     "CONCAT_TOD: no such time of day; the result is TOD#00:00:00");
 }
 
 /// CONCAT_LTOD(HOUR, MINUTE, SECOND, MILLISECOND): the LTIME_OF_DAY; invalid:
@@ -247,10 +254,8 @@ template <class H, class Mi, class S, class Ms>
 template <class H, class Mi, class S, class Ms>
 [[nodiscard]] constexpr LTOD CONCAT_LTOD(const H& hour, const Mi& minute, const S& second, const Ms& millisecond) {
   detail::check_time_components<H, Mi, S, Ms>();
-  detail::time_components c;
-  detail::add_daytime(c, detail::component_value(hour), detail::component_value(minute),
-                      detail::component_value(second), detail::component_value(millisecond));
-  return detail::point_of<LTOD>(c, "CONCAT_LTOD: no such time of day; the result is LTOD#00:00:00");
+  return detail::concat_daytime<LTOD>(hour, minute, second, millisecond,
+                                      "CONCAT_LTOD: no such time of day; the result is LTOD#00:00:00");
 }
 
 /// CONCAT_DT(YEAR, MONTH, DAY, HOUR, MINUTE, SECOND, MILLISECOND): the DATE_AND_TIME (whole

@@ -38,6 +38,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/parse_result.hpp>
+#include <iecoop/detail/reflect.hpp>
 #include <iecoop/detail/type_hash.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -175,25 +176,11 @@ inline constexpr bool enum_to_string = false;
 
 namespace detail {
 
-template <auto V>
-constexpr std::string_view enum_value_signature() noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-  return __PRETTY_FUNCTION__;
-#else
-#error "iecoop: enumeration names need GCC or Clang (__PRETTY_FUNCTION__)"
-#endif
-}
-
-/// The compiler's spelling of the enumeration value V, cut out of "... [with auto V = <it>; ...]"
-/// (GCC) or "... [V = <it>]" (Clang): `app::E_State::Run`, `app::Run`, or `(app::E_State)12` for
-/// a value that is no enumerator.
+/// The compiler's spelling of the enumeration value V (from reflect.hpp's signature_of):
+/// `app::E_State::Run`, `app::Run`, or `(app::E_State)12` for a value that is no enumerator.
 template <auto V>
 constexpr std::string_view enum_value_spelling() noexcept {
-  constexpr std::string_view signature = enum_value_signature<V>();
-  constexpr std::size_t start = signature.find("V = ") + 4;
-  constexpr std::size_t semicolon = signature.find(';', start);
-  constexpr std::size_t end = semicolon != std::string_view::npos ? semicolon : signature.rfind(']');
-  return signature.substr(start, end - start);
+  return argument_spelling(signature_of<V>(), "Entity = ");
 }
 
 constexpr bool is_identifier(std::string_view s) noexcept {
