@@ -11,6 +11,7 @@ struct lifecycle_flags {
   bool in_copy_code = false;     ///< bInCopyCode of FB_Init and FB_Exit
   bool exit_suppressed = false;  ///< destruction of a scratch copy: no FB_Exit
   bool relocating = false;       ///< copying an instance during an online change
+  bool init_suppressed = false;  ///< construction of a probe (a layout check): no FB_Init
 };
 
 /// The flags of the operation under way. Lifecycle operations are not thread-safe: run them

@@ -7,7 +7,10 @@
 // The IEC elementary types, STRING(n), WSTRING(n) and arrays of them are hashed under their
 // IEC names ("INT", "STRING(10)", "ARRAY[3] OF INT"), which every compiler and platform
 // spells alike. Any other type is hashed under the compiler's spelling of its name, read from
-// __PRETTY_FUNCTION__ as detail/reflect.hpp reads names: "app::ST_Recipe" for a user STRUCT.
+// __PRETTY_FUNCTION__ as detail/reflect.hpp reads names: "app::ST_Recipe" for a user STRUCT,
+// followed, where iecoop can reflect the STRUCT (member_wise_struct), by each member's name and
+// type: "app::ST_Recipe{rSpeed:REAL;bOn:BOOL;}", so that retyping a member (USINT -> BOOL)
+// changes the hash though the size stays.
 #pragma once
 
 #include <array>
@@ -15,8 +18,10 @@
 #include <cstdint>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/reflect.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -102,6 +107,14 @@ struct iec_string_traits<iec_string<C, N>> {
   static constexpr std::size_t capacity = N;
 };
 
+/// A STRUCT whose members iecoop reads one by one: an aggregate of standard layout (no base
+/// with members of its own next to the derived ones: a STRUCT that EXTENDS another is read
+/// as a whole), not a union, default-constructible (its members' offsets are read from a
+/// value of it).
+template <class T>
+concept member_wise_struct = std::is_class_v<T> && std::is_aggregate_v<T> && std::is_standard_layout_v<T> &&
+                             std::is_default_constructible_v<T> && Reflectable<T>;
+
 /// Feeds a signed decimal number to `hash`.
 constexpr fnv1a& add_signed(fnv1a& hash, std::int64_t value) noexcept {
   if (value < 0) hash.add("-");
@@ -133,6 +146,12 @@ constexpr void add_type_name(fnv1a& hash) noexcept {
   } else if constexpr (is_std_array<U>::value) {
     hash.add("ARRAY[").add_decimal(std::tuple_size_v<U>).add("] OF ");
     add_type_name<typename U::value_type>(hash);
+  } else if constexpr (member_wise_struct<U>) {
+    hash.add(type_name<U>()).add("{");
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((hash.add(field_name<U, I>).add(":"), add_type_name<field_type<U, I>>(hash), hash.add(";")), ...);
+    }(std::make_index_sequence<field_count<U>>{});
+    hash.add("}");
   } else {
     hash.add(type_name<U>());
   }

@@ -62,6 +62,7 @@ void run_fb_init(B& block, P&&... params_then_initial_values) {
     static_assert(
         requires { block_access::fb_init(block, BOOL{}, BOOL{}, std::get<I>(std::move(arguments))...); },
         "iecoop: the block has no FB_Init(BOOL bInitRetains, BOOL bInCopyCode, <these parameters>)");
+    if (detail::current_lifecycle.init_suppressed) return;  // a probe of the layout, no instance
     block_access::fb_init(block, BOOL(detail::current_lifecycle.init_retains),
                           BOOL(detail::current_lifecycle.in_copy_code), std::get<I>(std::move(arguments))...);
     block.with(std::get<params + J>(std::move(arguments))...);

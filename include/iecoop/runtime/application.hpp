@@ -104,35 +104,43 @@ class application {
 
   /**
    * Starts the tasks. If the instances do not exist yet (first start, or after stop()), they
-   * are constructed first — FB_Init runs for each, with bInitRetains = FALSE if retained data
-   * was found (in the retain memory from this application's last stop, else in the attached
-   * storage) and TRUE otherwise — and the retained values are restored (`mode` says which). After a reset,
-   * start() continues with the existing instances; cyclic and freewheeling tasks are released
-   * from now() on. On a running application it does nothing. Returns FALSE in the exception
-   * state (reset first).
+   * are constructed first, and the retained values are restored (`mode` says which): from the
+   * retain memory, which holds this application's last stop(), else from the attached
+   * storage. An image from the storage is checked before any instance exists — intact,
+   * saved by the same variables, every value one of its type (retain_status() tells what was
+   * found) — so that FB_Init gets bInitRetains = FALSE exactly when the RETAIN values are
+   * restored. A damaged image is replaced by the storage's previous one if it has one
+   * (load_previous()); a rejected image is moved aside (set_aside()) so that no save
+   * overwrites it. After a reset, start() continues with the existing instances; cyclic and
+   * freewheeling tasks are released from now() on. On a running application it does nothing.
+   * Returns FALSE in the exception state (reset first), and if the RETAIN and PERSISTENT
+   * variables need more than the retain memory (a fault of kind invalid_value; the
+   * application stays stopped: give it retain_capacity<N>{} with the N the fault names).
    */
   bool start(start_mode mode = start_mode::restart) {
     if (scheduler_.state() == scheduler_state::exception) return false;
     if (scheduler_.state() == scheduler_state::running) return true;
-    if (!constructed_) load(mode);
+    if (!constructed_ && !load(mode)) return false;
     return scheduler_.start();
   }
 
   /// Stops the tasks and ends the instances: saves the RETAIN and PERSISTENT values (to the
-  /// retain memory and the attached storage), then FB_Exit of every instance. The next
-  /// start() is a controller restart.
+  /// retain memory and the attached storage), then FB_Exit of every instance. A storage that
+  /// fails to save reports fault_kind::invalid_value after FB_Exit has run. The next start()
+  /// is a controller restart.
   void stop() {
     if (!constructed_) return;
     const std::size_t size = save(retain_kinds::both);
     retain_size_ = size;
-    if (size > 0 && storage_.object != nullptr &&
-        !storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size))) {
+    const bool saved = size == 0 || storage_.object == nullptr ||
+                       storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size));
+    destroy();
+    scheduler_.halt();
+    if (!saved) {
       fault(fault_kind::invalid_value,
             "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or "
             "with older data)");
     }
-    destroy();
-    scheduler_.halt();
   }
 
   /**
@@ -149,10 +157,22 @@ class application {
                                                                    : retain_event::origin_reset);
     const std::size_t size = save(keep);
     destroy();
+    iecoop::retain_status status;
+    status.retain = keep.contains(retain_kind::retain) ? retain_load::restored : retain_load::not_kept;
+    status.persistent = keep.contains(retain_kind::persistent) ? retain_load::restored : retain_load::not_kept;
+    publish(status);
     construct(kind != reset_kind::warm);
     if (size > 0) restore(keep, size);
     scheduler_.restart();
   }
+
+  /// What the last start() that constructed the instances, or the last reset(), did with the
+  /// retained data (also readable by the programs: retain_info()).
+  [[nodiscard]] const iecoop::retain_status& retain_status() const noexcept { return retain_status_; }
+
+  /// The bytes of retain memory the RETAIN and PERSISTENT variables need (their image), as
+  /// the last start() found them; 0 before it, or without such variables.
+  [[nodiscard]] std::size_t retain_bytes_needed() const noexcept { return retain_bytes_needed_; }
 
   [[nodiscard]] application_state state() const noexcept {
     if (!constructed_) return application_state::stopped;
@@ -236,11 +256,29 @@ class application {
   /// the instances (a controller restart, possibly of another process). Must outlive its use.
   template <RetainStorage S>
   void use_storage(S& storage) noexcept {
+    storage_ = storage_binding{};
     storage_.object = &storage;
     storage_.save = [](void* s, std::span<const std::byte> data) { return static_cast<S*>(s)->save(data); };
     storage_.load = [](void* s, std::span<std::byte> buffer) {
       return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer));
     };
+    if constexpr (requires(S& s, std::span<std::byte> buffer) {
+                    { s.load_previous(buffer) } -> std::convertible_to<std::size_t>;
+                  }) {
+      storage_.load_previous = [](void* s, std::span<std::byte> buffer) {
+        return static_cast<std::size_t>(static_cast<S*>(s)->load_previous(buffer));
+      };
+    }
+    if constexpr (requires(S& s) {
+                    { s.set_aside() } -> std::same_as<bool>;
+                  }) {
+      storage_.set_aside = [](void* s) { return static_cast<S*>(s)->set_aside(); };
+    }
+    if constexpr (requires(const S& s) {
+                    { s.stored_size() } -> std::convertible_to<std::size_t>;
+                  }) {
+      storage_.stored_size = [](void* s) { return static_cast<std::size_t>(static_cast<const S*>(s)->stored_size()); };
+    }
   }
 
   /// Saves the RETAIN and PERSISTENT values to the attached storage now (as TwinCAT's
@@ -266,6 +304,9 @@ class application {
     void* object = nullptr;
     bool (*save)(void*, std::span<const std::byte>) = nullptr;
     std::size_t (*load)(void*, std::span<std::byte>) = nullptr;
+    std::size_t (*load_previous)(void*, std::span<std::byte>) = nullptr;  // optional
+    bool (*set_aside)(void*) = nullptr;                                   // optional
+    std::size_t (*stored_size)(void*) = nullptr;                          // optional
   };
 
   void construct(bool init_retains) {
@@ -276,33 +317,128 @@ class application {
     scheduler_.cycles().publish_image_outputs();  // what FB_Init wrote to %Q goes out with the first cycle
   }
 
+  void publish(const iecoop::retain_status& status) noexcept {
+    retain_status_ = status;
+    retain_status_.BootDataLoaded =
+        BOOL(status.persistent == retain_load::restored || status.persistent == retain_load::restored_previous);
+    retain_status_.OldBootData = BOOL(status.persistent == retain_load::restored_previous);
+    detail::last_retain_status = retain_status_;
+  }
+
   void destroy() {
     detail::lifecycle_scope exiting({true, false, false, false});
     store_.destroy_all();
     constructed_ = false;
   }
 
-  void load(start_mode mode) {
-    // The retain memory holds this application's last stop(): never older than the storage,
-    // which may have failed to save it. A new application (a new process) has none yet.
-    // (Without retain memory there is nothing to read: GCC 12 -O3 would warn of reads from the
-    // empty array on the paths it cannot rule out.)
+  /// Constructs the instances and restores what `mode` keeps; FALSE (and nothing
+  /// constructed) if their RETAIN and PERSISTENT variables do not fit the retain memory.
+  bool load(start_mode mode) {
+    const retain_kinds wanted = kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
+    iecoop::retain_status status;
+    detail::retained_verdict verdict;
+    verdict.retain = wanted.contains(retain_kind::retain) ? retain_load::initial : retain_load::not_kept;
+    verdict.persistent = wanted.contains(retain_kind::persistent) ? retain_load::initial : retain_load::not_kept;
     std::size_t size = 0;
+    bool own = false;  // the image is this application's own last stop(): its layout is the current one
     if constexpr (retain_bytes > 0) {
-      size = retain_size_;
-      if (size == 0 && storage_.object != nullptr) {
-        size = storage_.load(storage_.object, retain_memory_);
-        if (size > retain_memory_.size()) size = 0;
+      if (retain_size_ > 0) {
+        size = retain_size_;
+        own = true;
+      } else if (storage_.object != nullptr) {
+        size = read_storage(wanted, verdict, status);
       }
     }
-    const retain_kinds keep =
-        size == 0 ? retain_kinds::none
-                  : kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
-    construct(!keep.contains(retain_kind::retain));
+    status.retain = verdict.retain;
+    status.persistent = verdict.persistent;
+    // bInitRetains = FALSE where the RETAIN values will be restored: for an image of this
+    // application, where it has them; for one from the storage, where the probe found them usable.
+    const bool init_retains =
+        own ? !wanted.contains(retain_kind::retain) : !verdict.restorable().contains(retain_kind::retain);
+    publish(status);
+    construct(init_retains);
+    if (!retain_fits()) return false;
     if constexpr (retain_bytes > 0) {
-      if (size > 0) restore(keep, size);
+      if (size > 0) {
+        const auto objects = store_.objects();
+        const std::span<const std::byte> stored(retain_memory_.data(), size);
+        const detail::retained_verdict found = own ? detail::check_retained(objects, wanted, stored) : verdict;
+        (void)detail::restore_checked(objects, found, stored);
+        if (own) {
+          status.retain = found.retain;
+          status.persistent = found.persistent;
+          publish(status);
+        }
+      }
     }
+    retain_size_ = 0;
     scheduler_.restart();
+    return true;
+  }
+
+  /// Reads the storage's image into the retain memory and checks it against the variables of
+  /// a probe (the instances constructed without FB_Init, then destroyed without FB_Exit):
+  /// the image's size, and `verdict` for each kind in `wanted`. A damaged image gives way to
+  /// the storage's previous one, if it has an intact one; a rejected image is set aside.
+  std::size_t read_storage(retain_kinds wanted, detail::retained_verdict& verdict, iecoop::retain_status& status) {
+    const auto mark_all = [&](retain_load load) {
+      for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+        if (wanted.contains(kind)) verdict[kind] = load;
+      }
+    };
+    std::size_t size = storage_.load(storage_.object, retain_memory_);
+    if (size > retain_memory_.size()) size = 0;
+    bool previous = false;
+    bool rejected = false;
+    if (size == 0) {
+      if (storage_.stored_size == nullptr || storage_.stored_size(storage_.object) <= retain_memory_.size()) return 0;
+      mark_all(retain_load::too_large);  // a valid image may be in it, but not one of this application
+      rejected = true;
+    } else if (!detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), size))) {
+      mark_all(retain_load::damaged);
+      rejected = true;
+      if (storage_.load_previous != nullptr) {
+        const std::size_t older = storage_.load_previous(storage_.object, retain_memory_);
+        if (older > 0 && older <= retain_memory_.size() &&
+            detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), older))) {
+          size = older;
+          previous = true;
+        }
+      }
+      if (!previous) size = 0;
+    }
+    if (size > 0) {
+      {
+        const detail::lifecycle_scope probing({true, false, true, false, true});
+        store_.construct_all();
+        const detail::retained_verdict found =
+            detail::check_retained(store_.objects(), wanted, std::span<const std::byte>(retain_memory_.data(), size));
+        store_.destroy_all();
+        for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+          if (!wanted.contains(kind)) continue;
+          verdict[kind] = found[kind];
+          if (found[kind] == retain_load::restored && previous) verdict[kind] = retain_load::restored_previous;
+          if (found[kind] == retain_load::changed || found[kind] == retain_load::invalid_value) rejected = true;
+        }
+      }
+    }
+    if (rejected && storage_.set_aside != nullptr) status.set_aside = storage_.set_aside(storage_.object);
+    return size;
+  }
+
+  /// TRUE if the variables' image fits the retain memory; otherwise reports the fault, ends
+  /// the instances (FB_Exit) and leaves the application stopped.
+  bool retain_fits() {
+    const std::size_t needed = detail::retained_count(store_.objects(), retain_kinds::both) == 0
+                                   ? 0
+                                   : detail::retained_image_size(store_.objects(), retain_kinds::both);
+    retain_bytes_needed_ = needed;
+    if (needed <= retain_bytes) return true;
+    destroy();
+    fault(fault_kind::invalid_value,
+          "the RETAIN and PERSISTENT variables need more retain memory than the application has; give it "
+          "retain_capacity<N>{} with N at least application::retain_bytes_needed()");
+    return false;
   }
 
   std::size_t save(retain_kinds kinds) {
@@ -319,6 +455,8 @@ class application {
   scheduler_type scheduler_;  // with the task_cycles, which call the programs in store_
   std::array<std::byte, retain_bytes> retain_memory_{};
   std::size_t retain_size_ = 0;
+  std::size_t retain_bytes_needed_ = 0;
+  iecoop::retain_status retain_status_{};
   storage_binding storage_{};
   bool constructed_ = false;
 };

@@ -30,12 +30,14 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 #include <type_traits>
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/detail/type_hash.hpp>
 #include <iecoop/detail/value_operators.hpp>
+#include <iecoop/detail/value_validity.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/variables.hpp>
 
@@ -124,18 +126,93 @@ enum class retain_event : std::uint8_t {
 }
 
 // ---------------------------------------------------------------------------------------
+// What a start found
+
+/**
+ * What became of the RETAIN or the PERSISTENT variables when the application started (the
+ * states of TwinCAT's bootDataFlags, and the reasons CODESYS reports a retain mismatch).
+ * Whatever was not restored starts with its initial values.
+ */
+enum class retain_load : std::uint8_t {
+  initial,            ///< nothing to restore: a first start, no storage, nothing stored, or a reset origin
+  restored,           ///< the values saved last were restored
+  restored_previous,  ///< the last image was unusable; the one saved before it was restored
+  not_kept,           ///< the event does not keep this kind (RETAIN over a new download or a cold reset)
+  damaged,            ///< the stored image is damaged: magic, version, size, checksum or structure
+  changed,            ///< the variables changed since the image was saved (added, removed, moved, retyped)
+  invalid_value,      ///< a saved value is no value of its variable's type (a BOOL of 2, a STRING without end)
+  too_large,          ///< the stored image is larger than the retain memory (retain_capacity<N>)
+};
+
+/// The name of a retain_load, as written above ("restored_previous").
+[[nodiscard]] constexpr std::string_view to_string(retain_load load) noexcept {
+  switch (load) {
+    case retain_load::initial: return "initial";
+    case retain_load::restored: return "restored";
+    case retain_load::restored_previous: return "restored_previous";
+    case retain_load::not_kept: return "not_kept";
+    case retain_load::damaged: return "damaged";
+    case retain_load::changed: return "changed";
+    case retain_load::invalid_value: return "invalid_value";
+    case retain_load::too_large: return "too_large";
+  }
+  return "?";
+}
+
+/**
+ * What the last start() or reset() of an application did with its retained data: readable by
+ * the application (application::retain_status()) and by its programs (retain_info(), as
+ * TwinCAT's `_AppInfo`), from FB_Init on.
+ */
+struct retain_status {
+  retain_load retain = retain_load::initial;      ///< the RETAIN variables
+  retain_load persistent = retain_load::initial;  ///< the PERSISTENT variables
+  /// The stored image was rejected and moved aside by the storage (set_aside()), so that the
+  /// next save does not overwrite it.
+  bool set_aside = false;
+  /// TwinCAT's `_AppInfo.BootDataLoaded`: the PERSISTENT variables were restored.
+  BOOL BootDataLoaded = FALSE;
+  /// TwinCAT's `_AppInfo.OldBootData`: they were restored from the image saved before the last.
+  BOOL OldBootData = FALSE;
+
+  /// The status of `kind`.
+  [[nodiscard]] constexpr retain_load of(retain_kind kind) const noexcept {
+    return kind == retain_kind::retain ? retain : persistent;
+  }
+  /// TRUE if a stored image was found but not (or not wholly) used.
+  [[nodiscard]] constexpr bool rejected() const noexcept {
+    auto bad = [](retain_load load) {
+      return load == retain_load::damaged || load == retain_load::changed || load == retain_load::invalid_value ||
+             load == retain_load::too_large;
+    };
+    return bad(retain) || bad(persistent);
+  }
+  friend constexpr bool operator==(const retain_status&, const retain_status&) noexcept = default;
+};
+
+namespace detail {
+inline retain_status last_retain_status{};
+}  // namespace detail
+
+/// What the last start() or reset() of an application in this process did with its retained
+/// data (see retain_status): for a program, as TwinCAT's `_AppInfo.BootDataLoaded`.
+[[nodiscard]] inline const retain_status& retain_info() noexcept { return detail::last_retain_status; }
+
+// ---------------------------------------------------------------------------------------
 // The list of remanent variables
 
 namespace detail {
 
-/// What a remanent variable of type T and kind K is, shared by all such variables.
+/// What a remanent variable of type T and kind K is, shared by all such variables: its size,
+/// its type's hash, and the check that bytes are a value of it (detail/value_validity.hpp).
 struct retained_type {
   std::size_t size;
   std::uint32_t type_hash;
   retain_kind kind;
+  bool (*valid)(const std::byte*) noexcept;
 };
 template <class T, retain_kind Kind>
-inline constexpr retained_type retained_type_of{sizeof(T), type_hash<T>, Kind};
+inline constexpr retained_type retained_type_of{sizeof(T), type_hash<T>, Kind, &valid_value_bytes<T>};
 
 /// A remanent variable's entry in the list: where its value is, and what it is. The links
 /// live in the variable; nothing is allocated.

@@ -2,7 +2,8 @@
 // iecoop/runtime/retain_image.hpp — the byte image in which a runtime keeps the RETAIN and
 // PERSISTENT values of its instances over a reset or a restart: saved from the variables that
 // lie inside each instance, checked (magic, version, checksum, each section's layout hash) and
-// restored into them. See docs/retain.md, "How the values are kept".
+// restored into them when every value is one of its type. See docs/retain.md, "How the values
+// are kept".
 // IWYU pragma: private, include <iecoop/runtime/application.hpp>
 #pragma once
 
@@ -234,43 +235,128 @@ inline bool valid_retained_image(std::span<const std::byte> in) noexcept {
   return position == total;
 }
 
-/**
- * Copies values from an image save_retained wrote back into the remanent variables of
- * `objects`, for each section whose kind is in `kinds` and whose layout is the variables'
- * current layout (same variables, in the same objects, at the same offsets, of the same
- * sizes and types). A section whose layout differs is skipped, and its variables keep the
- * values they have (their initial values, after a rebuild). An image that is not intact
- * (magic, version, size, checksum, structure) restores nothing. Returns the kinds restored.
- */
-inline retain_kinds restore_retained(std::span<const retained_object> objects, retain_kinds kinds,
-                                     std::span<const std::byte> in) {
-  if (!valid_retained_image(in)) return retain_kinds::none;
+/// What restoring an image would do with each kind of remanent variable (check_retained).
+struct retained_verdict {
+  retain_load retain = retain_load::initial;
+  retain_load persistent = retain_load::initial;
+
+  [[nodiscard]] constexpr retain_load& operator[](retain_kind kind) noexcept {
+    return kind == retain_kind::retain ? retain : persistent;
+  }
+  [[nodiscard]] constexpr retain_load operator[](retain_kind kind) const noexcept {
+    return kind == retain_kind::retain ? retain : persistent;
+  }
+  /// The kinds whose values would be restored (restored, or restored_previous where the
+  /// image is the storage's previous one).
+  [[nodiscard]] constexpr retain_kinds restorable() const noexcept {
+    auto usable = [](retain_load load) {
+      return load == retain_load::restored || load == retain_load::restored_previous;
+    };
+    retain_kinds kinds;
+    if (usable(retain)) kinds |= retain_kind::retain;
+    if (usable(persistent)) kinds |= retain_kind::persistent;
+    return kinds;
+  }
+};
+
+/// Calls f(kind, position of the section's values, its header) for each section of an image
+/// valid_retained_image accepts (and of no other).
+template <class F>
+void for_each_retained_section(std::span<const std::byte> in, F&& f) {
   const std::size_t sections = retained_get(in.data() + 6, 2);
-  retain_kinds restored;
   std::size_t position = retain_image_header_size;
   for (std::size_t s = 0; s < sections; ++s) {
     const std::byte* header = in.data() + position;
-    const auto kind = static_cast<retain_kind>(retained_get(header, 1));
-    const std::uint32_t hash = retained_get(header + 4, 4);
-    const std::size_t count = retained_get(header + 8, 4);
-    const std::size_t data_size = retained_get(header + 12, 4);
     position += retain_section_header_size;
-    if (kinds.contains(kind) && !restored.contains(kind)) {
-      const retained_layout layout = retained_layout_of(objects, kind);
-      if (layout.hash == hash && layout.count == count && layout.data_size == data_size) {
-        std::size_t at = position;
-        for (const retained_object& object : objects) {
-          for_each_retained_in(object, kind, [&](retained_node& node, std::size_t) {
-            std::memcpy(node.value, in.data() + at, node.type->size);
-            at += node.type->size;
-          });
-        }
-        restored |= kind;
-      }
-    }
-    position += data_size;
+    f(static_cast<retain_kind>(retained_get(header, 1)), position, header);
+    position += retained_get(header + 12, 4);
   }
+}
+
+/// TRUE if every value of the section of `kind` at `position` is a value of its variable's
+/// type (the section's layout being the variables' current one).
+inline bool retained_values_valid(std::span<const retained_object> objects, retain_kind kind,
+                                  std::span<const std::byte> in, std::size_t position) {
+  bool valid = true;
+  for (const retained_object& object : objects) {
+    for_each_retained_in(object, kind, [&](const retained_node& node, std::size_t) {
+      if (valid && !node.type->valid(in.data() + position)) valid = false;
+      position += node.type->size;
+    });
+  }
+  return valid;
+}
+
+/**
+ * What restoring `in` into the remanent variables of `objects` would do, without changing
+ * them: for each kind in `kinds`, retain_load::restored if the image has a section of it whose
+ * layout is the variables' current layout (same variables, in the same objects, at the same
+ * offsets, of the same sizes and types) and whose every value is a value of its type;
+ * retain_load::changed if the layout differs, retain_load::invalid_value if a value is none,
+ * retain_load::initial if the image has no section of that kind. Every kind in `kinds` is
+ * retain_load::damaged if the image is not intact (magic, version, size, checksum,
+ * structure); a kind not in `kinds` is retain_load::not_kept.
+ */
+inline retained_verdict check_retained(std::span<const retained_object> objects, retain_kinds kinds,
+                                       std::span<const std::byte> in) {
+  retained_verdict verdict;
+  for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+    verdict[kind] = kinds.contains(kind) ? retain_load::initial : retain_load::not_kept;
+  }
+  if (!valid_retained_image(in)) {
+    for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+      if (kinds.contains(kind)) verdict[kind] = retain_load::damaged;
+    }
+    return verdict;
+  }
+  retain_kinds seen;
+  for_each_retained_section(in, [&](retain_kind kind, std::size_t position, const std::byte* header) {
+    if (!kinds.contains(kind) || seen.contains(kind)) return;  // the first section of a kind counts
+    seen |= kind;
+    const retained_layout layout = retained_layout_of(objects, kind);
+    if (layout.hash != retained_get(header + 4, 4) || layout.count != retained_get(header + 8, 4) ||
+        layout.data_size != retained_get(header + 12, 4)) {
+      verdict[kind] = retain_load::changed;
+    } else if (!retained_values_valid(objects, kind, in, position)) {
+      verdict[kind] = retain_load::invalid_value;
+    } else {
+      verdict[kind] = retain_load::restored;
+    }
+  });
+  return verdict;
+}
+
+/**
+ * Copies the values of the kinds `verdict` found restorable (check_retained on the same
+ * objects and image) back into the remanent variables of `objects`. Returns those kinds.
+ */
+inline retain_kinds restore_checked(std::span<const retained_object> objects, const retained_verdict& verdict,
+                                    std::span<const std::byte> in) {
+  const retain_kinds kinds = verdict.restorable();
+  retain_kinds restored;
+  if (kinds.empty()) return restored;  // and the image may not be intact
+  for_each_retained_section(in, [&](retain_kind kind, std::size_t position, const std::byte*) {
+    if (!kinds.contains(kind) || restored.contains(kind)) return;
+    for (const retained_object& object : objects) {
+      for_each_retained_in(object, kind, [&](retained_node& node, std::size_t) {
+        std::memcpy(node.value, in.data() + position, node.type->size);
+        position += node.type->size;
+      });
+    }
+    restored |= kind;
+  });
   return restored;
+}
+
+/**
+ * Copies values from an image save_retained wrote back into the remanent variables of
+ * `objects`, for each kind in `kinds` that check_retained finds restorable; the others keep
+ * the values they have (their initial values, after a rebuild). An image that is not intact
+ * restores nothing. Returns the kinds restored.
+ */
+inline retain_kinds restore_retained(std::span<const retained_object> objects, retain_kinds kinds,
+                                     std::span<const std::byte> in) {
+  return restore_checked(objects, check_retained(objects, kinds, in), in);
 }
 
 }  // namespace detail
