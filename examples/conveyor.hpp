@@ -32,7 +32,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace demo {
 
@@ -334,19 +333,23 @@ struct BELT_SIM : program<BELT_SIM> {
     double front;  // m from the infeed
     bool stuck;
   };
-  std::vector<part> parts;  // the one nearest the eye first
-  bool jam_next = false;    // the next part to reach the eye sticks there
-  double fed = 0.0;         // belt travel since the feeder's last part
+  // The parts on the belt, the one nearest the eye first: parts[0] to parts[count - 1]. In
+  // the program's own memory, as a PLC would keep them: the instances are built at start()
+  // and again at every reset, and a std::vector would allocate each time. About ten parts
+  // fit between the infeed and the box.
+  std::array<part, 32> parts{};
+  std::size_t count = 0;
+  bool jam_next = false;  // the next part to reach the eye sticks there
+  double fed = 0.0;       // belt travel since the feeder's last part
   LTIME last{};
 
   BELT_SIM() {
-    parts.reserve(32);  // no allocation while the tasks run
-    for (double front = 0.9; front > 0.0; front -= pitch) parts.push_back({front, false});
+    for (double front = 0.9; front > 0.0; front -= pitch) add({front, false});
   }
 
   void jam_next_part() { jam_next = true; }
   void remove_stuck_part() {
-    std::erase_if(parts, [](const part& p) { return p.stuck; });
+    remove_if([](const part& p) { return p.stuck; });
   }
 
   void body() {
@@ -359,7 +362,7 @@ struct BELT_SIM : program<BELT_SIM> {
     }
     const double dx = belt_speed * percent / 100.0 * dt;
 
-    for (std::size_t i = 0; i < parts.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       part& p = parts[i];
       if (p.stuck) continue;
       double to = p.front + dx;
@@ -371,17 +374,29 @@ struct BELT_SIM : program<BELT_SIM> {
       }
       p.front = std::max(p.front, to);
     }
-    std::erase_if(parts, [](const part& p) { return p.front - part_length >= box_at; });
+    remove_if([](const part& p) { return p.front - part_length >= box_at; });
 
     fed += dx;
-    if (fed >= pitch && (parts.empty() || parts.back().front >= pitch)) {
-      parts.push_back({fed - pitch, false});
+    if (fed >= pitch && (count == 0 || parts[count - 1].front >= pitch)) {
+      add({fed - pitch, false});
       fed = 0.0;
     }
 
     bool blocked = false;
-    for (const part& p : parts) blocked = blocked || (p.front >= eye_at && p.front - part_length < eye_at);
+    for (const part& p : std::span(parts.data(), count)) {
+      blocked = blocked || (p.front >= eye_at && p.front - part_length < eye_at);
+    }
     field.set<"%IX0.2">(BOOL(blocked));
+  }
+
+ private:
+  void add(const part& p) {
+    if (count < parts.size()) parts[count++] = p;
+  }
+  template <class Predicate>
+  void remove_if(Predicate gone) {
+    const auto end = std::remove_if(parts.begin(), parts.begin() + static_cast<std::ptrdiff_t>(count), gone);
+    count = static_cast<std::size_t>(end - parts.begin());
   }
 };
 
