@@ -645,4 +645,61 @@ TEST_SUITE("retain") {
     CHECK(storage.load(buffer) == 0);
     static_assert(memory_storage<8>::capacity() == 8);
   }
+
+  TEST_CASE("memory_storage keeps the image before the last save and one set aside") {
+    static_assert(RetainStorageWithPrevious<memory_storage<8>>);
+    static_assert(RetainStorageSetAside<memory_storage<8>>);
+    memory_storage<8> storage;
+    std::array<std::byte, 8> buffer{};
+    const auto save = [&](int first, std::size_t size) {  // bytes first, first + 1, ...
+      std::array<std::byte, 8> bytes{};
+      for (std::size_t i = 0; i < size; ++i) bytes[i] = static_cast<std::byte>(first + static_cast<int>(i));
+      return storage.save(std::span(bytes).first(size));
+    };
+    const auto first_byte = [](std::span<const std::byte> bytes) {
+      return bytes.empty() ? -1 : std::to_integer<int>(bytes[0]);
+    };
+    CHECK(storage.load_previous(buffer) == 0);
+    CHECK(save(10, 3));
+    CHECK(storage.load_previous(buffer) == 0);  // nothing before the first
+    CHECK(save(20, 5));
+    CHECK(storage.load(buffer) == 5);
+    CHECK(buffer[0] == std::byte{20});
+    CHECK(storage.load_previous(buffer) == 3);
+    CHECK(buffer[0] == std::byte{10});
+    std::array<std::byte, 2> small{};
+    CHECK(storage.load_previous(small) == 0);
+    CHECK(!storage.save(std::array<std::byte, 9>{}));  // too big: nothing changes
+    CHECK(first_byte(storage.previous()) == 10);
+
+    // set_aside: the current image goes aside, the previous one stays, also over the next save.
+    CHECK(storage.set_aside());
+    CHECK(storage.load(buffer) == 0);
+    CHECK(storage.size() == 0);
+    CHECK(first_byte(storage.rejected()) == 20);
+    CHECK(storage.load_previous(buffer) == 3);
+    CHECK(save(30, 4));
+    CHECK(first_byte(storage.data()) == 30);
+    CHECK(first_byte(storage.previous()) == 10);
+    CHECK(first_byte(storage.rejected()) == 20);
+    // All three slots are taken now; a save overwrites the previous image's, never the others.
+    CHECK(save(40, 8));
+    CHECK(first_byte(storage.data()) == 40);
+    CHECK(first_byte(storage.previous()) == 30);
+    CHECK(first_byte(storage.rejected()) == 20);
+    CHECK(save(50, 1));
+    CHECK(first_byte(storage.data()) == 50);
+    CHECK(first_byte(storage.previous()) == 40);
+    CHECK(first_byte(storage.rejected()) == 20);
+    CHECK(storage.previous().size() == 8);
+    // A second set_aside replaces the image set aside; one without an image changes nothing.
+    CHECK(storage.set_aside());
+    CHECK(first_byte(storage.rejected()) == 50);
+    CHECK(storage.set_aside());
+    CHECK(first_byte(storage.rejected()) == 50);
+    CHECK(first_byte(storage.previous()) == 40);
+    storage.clear();
+    CHECK(storage.load_previous(buffer) == 0);
+    CHECK(storage.rejected().empty());
+  }
 }
