@@ -1,17 +1,31 @@
 // SPDX-License-Identifier: MIT
-// iecoop/runtime/file_storage.hpp — a RetainStorage (<iecoop/runtime/retain.hpp>) in a file: where a PC or
-// an embedded Linux keeps its RETAIN and PERSISTENT image between two runs.
+// iecoop/runtime/file_storage.hpp — a RetainStorage (<iecoop/runtime/retain_storage.hpp>) in a file: where a
+// PC or an embedded Linux keeps its RETAIN and PERSISTENT image between two runs.
 //
 //     iecoop::file_storage storage{"/var/lib/machine/retain.bin"};
-//     storage.save(image);                 // writes retain.bin.tmp, renames it over retain.bin
-//     std::size_t n = storage.load(buffer);
+//     storage.save(image);                    // a new retain.bin; the one before is retain.bin.previous
+//     std::size_t n = storage.load(buffer);   // retain.bin
+//     n = storage.load_previous(buffer);      // retain.bin.previous
+//     storage.set_aside();                    // retain.bin becomes retain.bin.rejected
 //
-// Only <cstdio>: no allocation, no exceptions.
+// On POSIX systems only system calls (open, write, fsync, link, rename, ...): no allocation,
+// no exceptions. Elsewhere <cstdio>, which allocates and does not sync (see file_storage).
 #pragma once
 
 #include <cstddef>
-#include <cstdio>
 #include <span>
+
+#if (defined(__unix__) || defined(__APPLE__)) && __has_include(<unistd.h>)
+#include <atomic>
+#include <cerrno>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+#else
+#include <cstdio>
+#endif
 
 #include <iecoop/config.hpp>
 #include <iecoop/fault.hpp>
@@ -20,19 +34,56 @@
 
 namespace iecoop {
 
+#if (defined(__unix__) || defined(__APPLE__)) && __has_include(<unistd.h>)
+namespace detail {
+/// How many temporary names the file_storage objects of this process have taken: the n of its
+/// next `<path>.<pid>.<n>.tmp`. One counter for all objects, so that no two saves running in
+/// a process use the same name (and the pid tells processes apart).
+inline std::atomic<unsigned long> file_storage_names_taken{0};
+}  // namespace detail
+#endif
+
 /**
- * A RetainStorage in the file at `path`.
+ * A RetainStorage in the file at `path`, with the image before the last save kept in
+ * `<path>.previous` and an image the application rejected kept in `<path>.rejected`.
  *
- * save() writes `<path>.tmp` and renames it over `<path>`, so a crash while writing keeps the
- * previous file (on POSIX the rename replaces the file atomically; on Windows, whose rename
- * does not replace an existing file, the old file is removed first, and a crash between the
- * two steps leaves only `<path>.tmp`). The bytes reach the operating system, not
- * necessarily the disk: <cstdio> has no fsync, so a power failure right after save() may
- * lose them. load() of a missing or empty file, or of a file larger than the buffer,
- * returns 0.
+ * On POSIX systems (Linux, the BSDs, macOS), save():
+ *   1. creates a temporary file `<path>.<pid>.<n>.tmp` in the same directory, exclusively
+ *      (O_CREAT | O_EXCL | O_NOFOLLOW: it never opens an existing file nor follows a symbolic
+ *      link planted there; on a name that exists it takes the next n), writes the image and
+ *      fsyncs it (F_FULLFSYNC on macOS);
+ *   2. makes the current `<path>`, if there is one, the previous image: a hard link under a
+ *      second unique name, renamed over `<path>.previous` (where the file system has no hard
+ *      links, `<path>` itself is renamed to `<path>.previous`);
+ *   3. renames the temporary file over `<path>` and fsyncs the directory.
+ * Each step replaces names atomically and no file is ever written after it has its final name,
+ * so a save cut short at any point (the process killed, the power lost after the file's fsync)
+ * leaves `<path>` with the old image or the new one, whole; only where hard links are missing
+ * a cut between the two renames leaves no `<path>` and the old image in `<path>.previous`.
+ * Two processes (or two file_storage objects) saving to one path never share a temporary
+ * file (n counts the names a process took): the last rename wins and each image is whole. A symbolic link at `<path>`,
+ * `<path>.previous` or `<path>.rejected` is replaced, never written through. A failed save
+ * removes its temporary file; a killed one leaves it behind (`<path>.<pid>.<n>.tmp`, which
+ * nothing reads; it may be deleted when no save runs).
+ *
+ * load() and load_previous() read `<path>` and `<path>.previous`: the number of bytes, or 0
+ * for a missing, empty or unreadable file, one that is not a regular file, or one larger
+ * than the buffer. set_aside() renames `<path>` over `<path>.rejected`: later saves never
+ * overwrite that image, load() returns 0 until the next save, load_previous() still returns
+ * the previous image, and the save after it keeps that previous image (there is no current
+ * one to take its place).
+ *
+ * Elsewhere (no <unistd.h>: Windows, a bare-metal C library) the same three files are kept
+ * through <cstdio>, which allocates, cannot fsync, and writes the fixed temporary file
+ * `<path>.tmp` (following a link there; two savers collide): neither durable nor
+ * allocation-free nor safe against other users of the directory. A crash between its renames
+ * leaves the old image in `<path>.previous` only.
  *
  * The path is copied (at most max_path characters; a longer one reports
- * fault_kind::invalid_value, and the storage then saves and loads nothing).
+ * fault_kind::invalid_value, and the storage then saves and loads nothing). The file's own
+ * name must leave room for the suffixes within the system's limit of a name (NAME_MAX, 255
+ * on Linux): about 30 characters. Several threads may save through one object, several
+ * objects (in one process or in several) to one path.
  */
 class file_storage {
  public:
@@ -45,20 +96,261 @@ class file_storage {
       fault(fault_kind::invalid_value, "file_storage needs a path of 1 to 255 characters");
       return;
     }
-    for (std::size_t i = 0; i < n; ++i) path_[i] = path[i];
+    for (std::size_t i = 0; i < n; ++i) {
+      path_[i] = path[i];
+      if (path[i] == '/') name_ = i + 1;
+    }
     path_[n] = '\0';
     length_ = n;
   }
 
-  /// Replaces the file's contents with `data`; FALSE if a step failed (the previous file,
-  /// if any, is then still there, and no `.tmp` is left behind).
+  /// Replaces the image with `data`, keeping the one it replaces as the previous image; FALSE
+  /// if a step failed. After a failed save `<path>` holds the image it held (or, where hard
+  /// links are missing and only the last rename failed, none, with that image in
+  /// `<path>.previous`), and no temporary file is left. FALSE also if the directory could
+  /// not be synced at the end: the new image is then in place but may not survive a power
+  /// failure.
   bool save(std::span<const std::byte> data) noexcept {
     if (length_ == 0) return false;
-    char temporary[max_path + 5];
-    for (std::size_t i = 0; i < length_; ++i) temporary[i] = path_[i];
-    const char suffix[] = ".tmp";
-    for (std::size_t i = 0; i < sizeof(suffix); ++i) temporary[length_ + i] = suffix[i];
+    return save_file(data);
+  }
 
+  /// Reads `<path>` into `buffer`: the number of bytes, or 0 if there is no such file, it is
+  /// empty, it cannot be read, or it is larger than `buffer`.
+  std::size_t load(std::span<std::byte> buffer) const noexcept {
+    if (length_ == 0) return 0;
+    return load_file(path_, buffer);
+  }
+
+  /// Reads `<path>.previous`, the image the last save replaced, as load() reads `<path>`.
+  std::size_t load_previous(std::span<std::byte> buffer) const noexcept {
+    if (length_ == 0) return 0;
+    char previous[name_capacity];
+    return load_file(with_suffix(previous, 0, previous_suffix), buffer);
+  }
+
+  /// Renames `<path>` over `<path>.rejected`, out of reach of later saves (an image the
+  /// application found damaged or not fitting its program). TRUE if there is no `<path>`
+  /// afterwards (also when there was none); FALSE if it could not be moved.
+  bool set_aside() noexcept {
+    if (length_ == 0) return false;
+    return set_aside_file();
+  }
+
+  /// The file's path ("" if the path given was too long).
+  [[nodiscard]] const char* path() const noexcept { return path_; }
+
+ private:
+  static constexpr char previous_suffix[] = ".previous";
+  static constexpr char rejected_suffix[] = ".rejected";
+  /// Room for the path and its longest suffix, `.<pid>.<n>.tmp` (two 20-digit numbers).
+  static constexpr std::size_t name_capacity = max_path + 48;
+
+  /// `out` = the path from `from` (0: all of it, name_: the file's name) followed by `suffix`.
+  char* with_suffix(char (&out)[name_capacity], std::size_t from, const char* suffix) const noexcept {
+    std::size_t n = 0;
+    for (std::size_t i = from; i < length_; ++i) out[n++] = path_[i];
+    for (std::size_t i = 0; suffix[i] != '\0'; ++i) out[n++] = suffix[i];
+    out[n] = '\0';
+    return out;
+  }
+
+#if (defined(__unix__) || defined(__APPLE__)) && __has_include(<unistd.h>)
+  /// Attempts at a unique name before a save gives up (each name found taken costs one).
+  static constexpr int name_attempts = 64;
+  /// The largest single read or write (a size_t count beyond SSIZE_MAX is undefined).
+  static constexpr std::size_t max_transfer = std::size_t{1} << 30;
+
+  /// A file descriptor, closed when it goes out of scope (or by close()).
+  class descriptor {
+   public:
+    explicit descriptor(int fd) noexcept : fd_(fd) {}
+    ~descriptor() {
+      if (fd_ >= 0) ::close(fd_);
+    }
+    descriptor(const descriptor&) = delete;
+    descriptor& operator=(const descriptor&) = delete;
+    [[nodiscard]] int get() const noexcept { return fd_; }
+    /// Closes now; FALSE if close reported an error (EINTR is none: the descriptor is closed
+    /// then, and closing it again could close another thread's).
+    bool close() noexcept {
+      const int fd = fd_;
+      fd_ = -1;
+      return ::close(fd) == 0 || errno == EINTR;
+    }
+
+   private:
+    int fd_;
+  };
+
+  /// The file's name within its directory.
+  [[nodiscard]] const char* name() const noexcept { return path_ + name_; }
+
+  /// `out` = the file's name followed by `.<pid>.<n>.tmp`, a name no other save uses.
+  char* unique_name(char (&out)[name_capacity]) const noexcept {
+    char* end = with_suffix(out, name_, ".");
+    while (*end != '\0') ++end;
+    end = append_number(end, static_cast<unsigned long long>(::getpid()));
+    *end++ = '.';
+    end = append_number(end, detail::file_storage_names_taken.fetch_add(1, std::memory_order_relaxed));
+    const char tmp[] = ".tmp";
+    for (const char c : tmp) *end++ = c;
+    return out;
+  }
+
+  static char* append_number(char* out, unsigned long long value) noexcept {
+    char digits[20];
+    int n = 0;
+    do {
+      digits[n++] = static_cast<char>('0' + value % 10);
+      value /= 10;
+    } while (value != 0);
+    while (n > 0) *out++ = digits[--n];
+    return out;
+  }
+
+  /// The directory that holds the file, opened to sync it and to name files relative to it
+  /// (so that every name of one save is in the same directory).
+  [[nodiscard]] int open_directory() const noexcept {
+    char directory[max_path + 1];
+    if (name_ == 0) {
+      directory[0] = '.';
+      directory[1] = '\0';
+    } else {
+      const std::size_t n = name_ == 1 ? 1 : name_ - 1;  // "/name": the root; "a/name": "a"
+      for (std::size_t i = 0; i < n; ++i) directory[i] = path_[i];
+      directory[n] = '\0';
+    }
+    int fd = -1;
+    do fd = ::open(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    while (fd < 0 && errno == EINTR);
+    return fd;
+  }
+
+  static bool write_all(int fd, std::span<const std::byte> data) noexcept {
+    const std::byte* next = data.data();
+    std::size_t left = data.size();
+    while (left > 0) {
+      const ::ssize_t written = ::write(fd, next, left < max_transfer ? left : max_transfer);
+      if (written < 0 && errno == EINTR) continue;
+      if (written <= 0) return false;
+      next += written;
+      left -= static_cast<std::size_t>(written);
+    }
+    return true;
+  }
+
+  /// Brings the file's data (or the directory's entries) to the disk.
+  static bool sync(int fd) noexcept {
+#if defined(__APPLE__)
+    if (::fcntl(fd, F_FULLFSYNC) == 0) return true;  // macOS's fsync leaves it in the drive's cache
+#endif
+    int result = 0;
+    do result = ::fsync(fd);
+    while (result != 0 && errno == EINTR);
+    return result == 0;
+  }
+
+  /// Syncs the directory; a file system that cannot sync a directory (EINVAL) is no error.
+  static bool sync_directory(int fd) noexcept { return sync(fd) || errno == EINVAL; }
+
+  /// Creates and opens a new temporary file, its name in `out`; -1 on failure.
+  int create_temporary(int directory, char (&out)[name_capacity]) noexcept {
+    for (int attempt = 0; attempt < name_attempts; ++attempt) {
+      int fd = -1;
+      do
+        fd = ::openat(directory, unique_name(out), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY,
+                      S_IRUSR | S_IWUSR | S_IRGRP | S_IWGRP | S_IROTH | S_IWOTH);  // less the umask
+      while (fd < 0 && errno == EINTR);
+      if (fd >= 0 || errno != EEXIST) return fd;
+    }
+    return -1;
+  }
+
+  /// Makes the current file, if any, `<path>.previous`, leaving it at `<path>` too where the
+  /// file system has hard links.
+  bool keep_previous(int directory) noexcept {
+    char previous[name_capacity];
+    with_suffix(previous, name_, previous_suffix);
+    char second_name[name_capacity];
+    for (int attempt = 0; attempt < name_attempts; ++attempt) {
+      // linkat without AT_SYMLINK_FOLLOW links a symbolic link itself, not its target.
+      if (::linkat(directory, name(), directory, unique_name(second_name), 0) == 0) {
+        const bool renamed = ::renameat(directory, second_name, directory, previous) == 0;
+        // Gone if renamed, unless `<path>.previous` already was this file (another save just
+        // made it so), where rename does nothing.
+        ::unlinkat(directory, second_name, 0);
+        return renamed;
+      }
+      if (errno == ENOENT) return true;  // no current file: the previous one stays
+      if (errno == EEXIST || errno == EINTR) continue;
+      // No hard links here (or none to this file, EPERM): move the file itself, unless it is
+      // a directory, which is no image.
+      struct stat status {};
+      if (::fstatat(directory, name(), &status, AT_SYMLINK_NOFOLLOW) != 0) return errno == ENOENT;
+      if (S_ISDIR(status.st_mode)) return false;
+      return ::renameat(directory, name(), directory, previous) == 0 || errno == ENOENT;
+    }
+    return false;
+  }
+
+  bool save_file(std::span<const std::byte> data) noexcept {
+    const descriptor directory(open_directory());
+    if (directory.get() < 0) return false;
+    char temporary[name_capacity];
+    descriptor file(create_temporary(directory.get(), temporary));
+    if (file.get() < 0) return false;
+    bool done = write_all(file.get(), data) && sync(file.get());
+    done = file.close() && done;
+    done =
+        done && keep_previous(directory.get()) && ::renameat(directory.get(), temporary, directory.get(), name()) == 0;
+    if (!done) {
+      ::unlinkat(directory.get(), temporary, 0);
+      return false;
+    }
+    return sync_directory(directory.get());
+  }
+
+  static std::size_t load_file(const char* file_name, std::span<std::byte> buffer) noexcept {
+    int fd = -1;
+    // O_NONBLOCK: a FIFO planted at the name does not block the open (it is no regular file).
+    do fd = ::open(file_name, O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+    while (fd < 0 && errno == EINTR);
+    const descriptor file(fd);
+    if (fd < 0) return 0;
+    struct stat status {};
+    if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) return 0;
+    std::size_t total = 0;
+    while (total < buffer.size()) {
+      const std::size_t wanted = buffer.size() - total;
+      const ::ssize_t got = ::read(fd, buffer.data() + total, wanted < max_transfer ? wanted : max_transfer);
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) return 0;
+      if (got == 0) return total;
+      total += static_cast<std::size_t>(got);
+    }
+    // The buffer is full: the file must end here.
+    for (;;) {
+      std::byte beyond{};
+      const ::ssize_t got = ::read(fd, &beyond, 1);
+      if (got < 0 && errno == EINTR) continue;
+      return got == 0 ? total : 0;
+    }
+  }
+
+  bool set_aside_file() noexcept {
+    const descriptor directory(open_directory());
+    if (directory.get() < 0) return false;
+    char rejected[name_capacity];
+    if (::renameat(directory.get(), name(), directory.get(), with_suffix(rejected, name_, rejected_suffix)) != 0) {
+      return errno == ENOENT;
+    }
+    return sync_directory(directory.get());
+  }
+#else
+  bool save_file(std::span<const std::byte> data) noexcept {
+    char temporary[name_capacity];
+    with_suffix(temporary, 0, ".tmp");
     std::FILE* file = std::fopen(temporary, "wb");
     if (file == nullptr) return false;
     const bool written = data.empty() || std::fwrite(data.data(), 1, data.size(), file) == data.size();
@@ -68,20 +360,28 @@ class file_storage {
       std::remove(temporary);
       return false;
     }
+    // The current file becomes the previous one (rename does not replace a file everywhere:
+    // not on Windows); then <path> is free for the new one.
+    char previous[name_capacity];
+    with_suffix(previous, 0, previous_suffix);
+    if (exists(path_)) {
+      std::remove(previous);
+      std::rename(path_, previous);
+    }
     if (std::rename(temporary, path_) == 0) return true;
-#if defined(_WIN32)
-    // Windows' rename does not replace an existing file: remove it first.
-    if (std::remove(path_) == 0 && std::rename(temporary, path_) == 0) return true;
-#endif
     std::remove(temporary);
     return false;
   }
 
-  /// Reads the file into `buffer`: the number of bytes, or 0 if there is no such file, it is
-  /// empty, it cannot be read, or it is larger than `buffer`.
-  std::size_t load(std::span<std::byte> buffer) noexcept {
-    if (length_ == 0) return 0;
-    std::FILE* file = std::fopen(path_, "rb");
+  static bool exists(const char* file_name) noexcept {
+    std::FILE* file = std::fopen(file_name, "rb");
+    if (file == nullptr) return false;
+    std::fclose(file);
+    return true;
+  }
+
+  static std::size_t load_file(const char* file_name, std::span<std::byte> buffer) noexcept {
+    std::FILE* file = std::fopen(file_name, "rb");
     if (file == nullptr) return 0;
     const std::size_t read = buffer.empty() ? 0 : std::fread(buffer.data(), 1, buffer.size(), file);
     const bool failed = std::ferror(file) != 0;
@@ -90,12 +390,18 @@ class file_storage {
     return failed || more ? 0 : read;
   }
 
-  /// The file's path ("" if the path given was too long).
-  [[nodiscard]] const char* path() const noexcept { return path_; }
+  bool set_aside_file() noexcept {
+    if (!exists(path_)) return true;
+    char rejected[name_capacity];
+    with_suffix(rejected, 0, rejected_suffix);
+    std::remove(rejected);
+    return std::rename(path_, rejected) == 0;
+  }
+#endif
 
- private:
   char path_[max_path + 1]{};
   std::size_t length_ = 0;
+  std::size_t name_ = 0;  // where the file's name starts in path_ (after the last '/')
 };
 
 }  // namespace iecoop
