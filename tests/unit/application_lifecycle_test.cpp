@@ -219,10 +219,20 @@ TEST_SUITE("application: resets and RETAIN / PERSISTENT (docs/retain.md, what su
   }
 }
 
+namespace {
+
+/// Removes a file_storage's file and the images it keeps beside it (`.previous`, `.rejected`):
+/// a stale previous image would be found by the next run of the test.
+void remove_storage_files(const std::string& path) {
+  for (const char* suffix : {"", ".previous", ".rejected"}) std::remove((path + suffix).c_str());
+}
+
+}  // namespace
+
 TEST_SUITE("application: retained data in a storage") {
   TEST_CASE("a file keeps RETAIN and PERSISTENT over the end of the process") {
     const char* path = "iecoop_application_lifecycle_test_restart.bin";
-    std::remove(path);
+    remove_storage_files(path);
     {
       file_storage storage(path);
       auto plc = make_plant();
@@ -247,12 +257,12 @@ TEST_SUITE("application: retained data in a storage") {
       CHECK(MACHINE_PRG::instance().nParts == 0);
       CHECK(MACHINE_PRG::instance().nHours == 106U);
     }
-    std::remove(path);
+    remove_storage_files(path);
   }
 
   TEST_CASE("without saved data, start is a first start") {
     const char* path = "iecoop_application_lifecycle_test_missing.bin";
-    std::remove(path);
+    remove_storage_files(path);
     file_storage storage(path);
     auto plc = make_plant();
     plc.use_storage(storage);
@@ -261,7 +271,7 @@ TEST_SUITE("application: retained data in a storage") {
     CHECK(events == "init:TF ");
     CHECK(MACHINE_PRG::instance().nHours == 100U);
     plc.stop();
-    std::remove(path);
+    remove_storage_files(path);
   }
 
   TEST_CASE("save_retained writes the values now") {
