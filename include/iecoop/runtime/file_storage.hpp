@@ -340,7 +340,7 @@ class file_storage {
 
   bool set_aside_file() noexcept {
     const descriptor directory(open_directory());
-    if (directory.get() < 0) return false;
+    if (directory.get() < 0) return errno == ENOENT;  // no directory, no file
     char rejected[name_capacity];
     if (::renameat(directory.get(), name(), directory.get(), with_suffix(rejected, name_, rejected_suffix)) != 0) {
       return errno == ENOENT;
