@@ -320,6 +320,7 @@ class file_storage {
     if (fd < 0) return 0;
     struct stat status {};
     if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) return 0;
+    if (status.st_size < 0 || static_cast<unsigned long long>(status.st_size) > buffer.size()) return 0;
     std::size_t total = 0;
     while (total < buffer.size()) {
       const std::size_t wanted = buffer.size() - total;
