@@ -404,9 +404,11 @@ TEST_SUITE("application: what start() finds in the storage") {
       plc.run_for(ms(3));
     }
     std::array<std::byte, 512> bytes{};
+    const std::size_t size = storage.size();
     std::copy(storage.data().begin(), storage.data().end(), bytes.begin());
     bytes[20] ^= std::byte{1};
-    REQUIRE(storage.save(std::span(bytes).first(storage.size())));
+    storage.clear();  // no previous image
+    REQUIRE(storage.save(std::span(bytes).first(size)));
     auto plc = make_line();
     plc.use_storage(storage);
     events.clear();
@@ -415,9 +417,13 @@ TEST_SUITE("application: what start() finds in the storage") {
     CHECK(plc.retain_status().retain == retain_load::damaged);
     CHECK(plc.retain_status().persistent == retain_load::damaged);
     CHECK_FALSE(plc.retain_status().BootDataLoaded);
-    CHECK_FALSE(plc.retain_status().set_aside);  // memory_storage cannot
+    CHECK(plc.retain_status().set_aside);
     CHECK(plc.retain_status().rejected());
     CHECK(PRG_Line::instance().nTotal == 100U);
+    // The damaged image is aside, unchanged, also after the next save.
+    plc.stop();
+    REQUIRE(storage.rejected().size() == size);
+    CHECK(std::equal(storage.rejected().begin(), storage.rejected().end(), bytes.begin()));
   }
 
   TEST_CASE("an image of other variables (a new download that retyped one): changed, bInitRetains = TRUE") {
