@@ -7,13 +7,19 @@
 #include "iecoop_test.hpp"
 
 #include <iecoop/runtime/application.hpp>
+#include <iecoop/runtime/file_storage.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
 #include <span>
 #include <string>
+#include <vector>
 
 using namespace iecoop;
 using iecoop_test::fault_recorder;
@@ -495,6 +501,90 @@ TEST_SUITE("application: what start() finds in the storage") {
     plc.reset(reset_kind::origin);
     CHECK(plc.retain_status().persistent == retain_load::not_kept);
     CHECK_FALSE(plc.retain_status().BootDataLoaded);
+  }
+}
+
+namespace {
+
+std::vector<char> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_file(const std::string& path, const std::vector<char>& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+/// A retain file of its own in the temporary directory, with its .previous and .rejected.
+struct retain_file {
+  std::string path = (std::filesystem::temp_directory_path() /
+                      ("iecoop_retain_load_test_" + std::to_string(std::random_device{}()) + ".bin"))
+                         .string();
+  retain_file() { remove(); }
+  ~retain_file() { remove(); }
+  retain_file(const retain_file&) = delete;
+  retain_file& operator=(const retain_file&) = delete;
+  void remove() const {
+    std::error_code ignored;
+    for (const char* suffix : {"", ".previous", ".rejected"}) std::filesystem::remove(path + suffix, ignored);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("application: a damaged retain file, each kind of damage, with file_storage") {
+  retain_file file;
+  {
+    file_storage storage(file.path.c_str());
+    auto plc = make_line();
+    plc.use_storage(storage);
+    plc.start();
+    plc.run_for(ms(3));
+    plc.stop();  // the previous image: nTotal 103
+    plc.start();
+    plc.run_for(ms(3));
+    plc.stop();  // the current one: nTotal 106
+  }
+  const std::vector<char> good = read_file(file.path);
+  REQUIRE(good.size() > 40);
+  std::vector<char> damaged = good;
+  std::string expect = "restored_previous";
+  SUBCASE("one flipped bit") { damaged[damaged.size() / 2] ^= 0x04; }
+  SUBCASE("truncated") { damaged.resize(damaged.size() - 1); }
+  SUBCASE("cut to its header") { damaged.resize(16); }
+  SUBCASE("another format version") { damaged[4] = 2; }
+  SUBCASE("empty") {
+    damaged.clear();
+    expect = "initial";  // an empty file is no image: as if nothing was stored
+  }
+  SUBCASE("larger than the retain memory") {
+    damaged.resize(4096, '\0');
+    expect = "too_large";
+  }
+  write_file(file.path, damaged);
+  file_storage storage(file.path.c_str());
+  auto plc = make_line();
+  plc.use_storage(storage);
+  events.clear();
+  REQUIRE(plc.start());
+  CAPTURE(expect);
+  CHECK(std::string(to_string(plc.retain_status().retain)) == expect);
+  CHECK(std::string(to_string(plc.retain_status().persistent)) == expect);
+  if (expect == "restored_previous") {
+    CHECK(events == "init:F:restored_previous ");
+    CHECK(PRG_Line::instance().nTotal == 103U);
+    CHECK(plc.retain_status().OldBootData);
+  } else {
+    CHECK(events == "init:T:" + expect + " ");
+    CHECK(PRG_Line::instance().nTotal == 100U);
+  }
+  if (expect != "initial") {
+    // Set aside, byte for byte, and kept over the next save.
+    CHECK(plc.retain_status().set_aside);
+    CHECK(read_file(file.path + ".rejected") == damaged);
+    plc.stop();
+    CHECK(read_file(file.path + ".rejected") == damaged);
   }
 }
 

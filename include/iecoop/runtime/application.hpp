@@ -254,6 +254,9 @@ class application {
 
   /// Saves retained data to `storage` at stop() and reads it at the start() that constructs
   /// the instances (a controller restart, possibly of another process). Must outlive its use.
+  /// Where the storage has them, start() uses its previous image (RetainStorageWithPrevious)
+  /// for a damaged one, sets a rejected image aside (RetainStorageSetAside) and tells an image
+  /// too large for the retain memory (RetainStorageSized).
   template <RetainStorage S>
   void use_storage(S& storage) noexcept {
     storage_ = storage_binding{};
@@ -262,21 +265,15 @@ class application {
     storage_.load = [](void* s, std::span<std::byte> buffer) {
       return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer));
     };
-    if constexpr (requires(S& s, std::span<std::byte> buffer) {
-                    { s.load_previous(buffer) } -> std::convertible_to<std::size_t>;
-                  }) {
+    if constexpr (RetainStorageWithPrevious<S>) {
       storage_.load_previous = [](void* s, std::span<std::byte> buffer) {
         return static_cast<std::size_t>(static_cast<S*>(s)->load_previous(buffer));
       };
     }
-    if constexpr (requires(S& s) {
-                    { s.set_aside() } -> std::same_as<bool>;
-                  }) {
+    if constexpr (RetainStorageSetAside<S>) {
       storage_.set_aside = [](void* s) { return static_cast<S*>(s)->set_aside(); };
     }
-    if constexpr (requires(const S& s) {
-                    { s.stored_size() } -> std::convertible_to<std::size_t>;
-                  }) {
+    if constexpr (RetainStorageSized<S>) {
       storage_.stored_size = [](void* s) { return static_cast<std::size_t>(static_cast<const S*>(s)->stored_size()); };
     }
   }

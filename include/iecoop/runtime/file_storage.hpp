@@ -137,6 +137,13 @@ class file_storage {
     return set_aside_file();
   }
 
+  /// The size of `<path>` in bytes, 0 if there is none (or it is no regular file): what tells
+  /// the application that an image load() refused was too large for its retain memory.
+  [[nodiscard]] std::size_t stored_size() const noexcept {
+    if (length_ == 0) return 0;
+    return file_size(path_);
+  }
+
   /// The file's path ("" if the path given was too long).
   [[nodiscard]] const char* path() const noexcept { return path_; }
 
@@ -339,6 +346,12 @@ class file_storage {
     }
   }
 
+  static std::size_t file_size(const char* file_name) noexcept {
+    struct stat status {};
+    if (::stat(file_name, &status) != 0 || !S_ISREG(status.st_mode) || status.st_size < 0) return 0;
+    return static_cast<std::size_t>(status.st_size);
+  }
+
   bool set_aside_file() noexcept {
     const descriptor directory(open_directory());
     if (directory.get() < 0) return errno == ENOENT;  // no directory, no file
@@ -389,6 +402,15 @@ class file_storage {
     const bool more = !failed && std::fgetc(file) != EOF;  // the file is larger than the buffer
     std::fclose(file);
     return failed || more ? 0 : read;
+  }
+
+  static std::size_t file_size(const char* file_name) noexcept {
+    std::FILE* file = std::fopen(file_name, "rb");
+    if (file == nullptr) return 0;
+    const bool sought = std::fseek(file, 0, SEEK_END) == 0;
+    const long size = sought ? std::ftell(file) : -1;
+    std::fclose(file);
+    return size < 0 ? 0 : static_cast<std::size_t>(size);
   }
 
   bool set_aside_file() noexcept {

@@ -65,6 +65,16 @@ concept RetainStorageSetAside = RetainStorage<S> && requires(S& s) {
 };
 
 /**
+ * A RetainStorage that tells the size of its current image, `stored_size()` (0 if none), also
+ * when load() refuses it for a buffer too small: the application then reports the image as
+ * too large for its retain memory (retain_load::too_large) instead of finding nothing.
+ */
+template <class S>
+concept RetainStorageSized = RetainStorage<S> && requires(const S& s) {
+  { s.stored_size() } -> std::convertible_to<std::size_t>;
+};
+
+/**
  * A RetainStorage in RAM, of at most Capacity bytes per image: for tests, and for firmware
  * that copies it to non-volatile memory itself (or that places it in battery-backed RAM).
  * It holds three images — the current one, the previous one (RetainStorageWithPrevious) and
@@ -102,6 +112,9 @@ class memory_storage {
   /// The current image's bytes.
   [[nodiscard]] std::span<const std::byte> data() const noexcept { return bytes_of(current_); }
   [[nodiscard]] std::size_t size() const noexcept { return data().size(); }
+  /// The same: the size of the current image (what tells the application that an image
+  /// load() refused was too large for its retain memory).
+  [[nodiscard]] std::size_t stored_size() const noexcept { return size(); }
   /// The previous image's bytes (empty if none).
   [[nodiscard]] std::span<const std::byte> previous() const noexcept { return bytes_of(previous_); }
   /// The bytes of the image last set aside (empty if none).
