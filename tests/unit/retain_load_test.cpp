@@ -90,7 +90,7 @@ TEST_SUITE("retain: which bytes are values") {
     CHECK_FALSE(valid<percent>({0xFF, 0xFF}));  // -1
   }
 
-  TEST_CASE("a strict enumeration with its components holds one of them; any other any value") {
+  TEST_CASE("a strict enumeration with its components holds one of them, any other enumeration any value") {
     CHECK(valid<E_Mode>({5, 0}));
     CHECK(valid<E_Mode>({1, 0}));
     CHECK_FALSE(valid<E_Mode>({2, 0}));
