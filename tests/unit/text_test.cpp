@@ -262,6 +262,18 @@ TEST_SUITE("IEC literal text") {
     CHECK(parse_ltime("LTIME#1.0000000000000001d").error() == parse_error::too_precise);
   }
 
+  TEST_CASE("a literal whose lower unit overflows: the same duration spelt validly, or its other error") {
+    // What the diagnostic of "..."_iec proposes (tests/compile_fail/literal_unit_overflow*.cpp).
+    CHECK(detail::normalized_duration<TIME>("t#5m68s").value_or({}) == TIME::from_ticks(368'000));
+    CHECK(detail::normalized_duration<LTIME>("LT#1h60m").value_or({}) == LTIME::from_ticks(7'200'000'000'000ULL));
+    // Wrong besides: a later error (it proposed T#0ms), a duration beyond TIME (it proposed the
+    // duration wrapped to 32 bits, T#704ms).
+    CHECK(detail::normalized_duration<TIME>("T#5m68s1x").error() == parse_error::unknown_unit);
+    CHECK(detail::normalized_duration<LTIME>("LT#1s1000ms_").error() == parse_error::misplaced_underscore);
+    CHECK(detail::normalized_duration<TIME>("T#49d17h2m47s1000ms").error() == parse_error::out_of_range);
+    CHECK(detail::normalized_duration<TIME>("T#49d17h2m47s295ms").value_or({}) == TIME::max());
+  }
+
   TEST_CASE("a REAL has one sign") {
     CHECK(parse_real<REAL>("+-1.5").error() == parse_error::expected_digit);
     CHECK(parse_real<LREAL>("++1.5").error() == parse_error::expected_digit);

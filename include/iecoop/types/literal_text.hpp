@@ -310,6 +310,21 @@ constexpr parse_result<std::uint64_t> parse_duration_ns(std::string_view text, b
 
 namespace detail {
 
+/// The duration a TIME or LTIME literal that breaks only "a lower unit may not overflow" stands
+/// for ("T#5m68s": T#6m8s), read with every unit allowed to overflow: what the diagnostic of
+/// "..."_iec proposes instead (types/literals.hpp). Where the literal is wrong besides (an error
+/// further on, "T#5m68s1x"; a duration beyond the type, "T#49d17h2m47s1000ms"), that error.
+template <class T>
+[[nodiscard]] constexpr parse_result<T> normalized_duration(std::string_view text) noexcept {
+  constexpr bool is_ltime = std::is_same_v<T, LTIME>;
+  constexpr std::uint64_t resolution = is_ltime ? 1 : 1'000'000;
+  const auto ns = parse_duration_ns(text, is_ltime, resolution, true);
+  if (!ns) return {ns.error(), ns.position()};
+  const std::uint64_t ticks = ns.value_or(0) / resolution;
+  if (ticks > std::numeric_limits<typename T::rep>::max()) return {parse_error::out_of_range, text.find('#') + 1};
+  return T::from_ticks(static_cast<typename T::rep>(ticks));
+}
+
 constexpr int digit_value(char c) noexcept {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;

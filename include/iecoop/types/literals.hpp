@@ -289,17 +289,21 @@ consteval void duration_unit_overflow() noexcept {
                 "(the same duration) instead of the one `Given` spells");
 }
 
+/// What a duration literal whose lower unit overflows has wrong besides (none, or the error).
+template <class T, fixed_string S>
+consteval parse_error normalized_duration_error() noexcept {
+  const literal_chars<S> copy;
+  return normalized_duration<T>(copy.view()).error();
+}
+
 /// The valid spelling of a TIME or LTIME literal in which a lower unit overflows ("T#2m75s"
 /// is "T#3m15s"), for the diagnostic.
 template <class T, fixed_string S>
 consteval auto normalized_duration_literal() noexcept {
   const literal_chars<S> copy;
-  const auto ns =
-      parse_duration_ns(copy.view(), std::is_same_v<T, LTIME>, std::is_same_v<T, TIME> ? 1'000'000 : 1, true);
-  const std::uint64_t ticks = ns.value_or(0) / (std::is_same_v<T, TIME> ? 1'000'000 : 1);
   constant_text<64> text;
   char buffer[64]{};
-  const char* end = to_text(buffer, T::from_ticks(static_cast<typename T::rep>(ticks)));
+  const char* end = to_text(buffer, normalized_duration<T>(copy.view()).value_or(T{}));
   for (const char* p = buffer; p != end; ++p) text.chars[text.size++] = *p;
   return text;
 }
@@ -336,8 +340,14 @@ constexpr auto operator""_iec() noexcept {
     using T = typename detail::literal_cxx_type<type>::type;
     constexpr parse_result<T> result = detail::parse_literal<T, S>();
     if constexpr (result.error() == parse_error::unit_overflow) {
-      detail::duration_unit_overflow<detail::spelled_t<S>,
-                                     detail::spelled_t<detail::normalized_duration_literal<T, S>()>>();
+      // The same duration spelt validly, unless the literal is wrong besides (then that error).
+      constexpr parse_error besides = detail::normalized_duration_error<T, S>();
+      if constexpr (besides == parse_error::none) {
+        detail::duration_unit_overflow<detail::spelled_t<S>,
+                                       detail::spelled_t<detail::normalized_duration_literal<T, S>()>>();
+      } else {
+        detail::check_literal<besides>();
+      }
     } else if constexpr (AnyDate<T>) {
       detail::check_point_literal<result.error()>();
     } else {
