@@ -1,7 +1,9 @@
 #!/bin/sh
 # Builds and runs iecoop's whole test suite, the way CI does:
 #   0. the layout of the code against .clang-format (sh tools/format.sh --check),
-#   1. clang++ with AddressSanitizer and UndefinedBehaviorSanitizer (-O1),
+#   1. clang++ with AddressSanitizer and UndefinedBehaviorSanitizer (-O1), which also builds the
+#      libFuzzer targets of tests/fuzz/ and fuzzes each for 10 s (CTest label `fuzz`;
+#      docs/reliability.md),
 #   2. g++ Release (-O3, the build the benchmarks are measured in: GCC warns of some things,
 #      -Warray-bounds, -Wrestrict, only when it optimises),
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
@@ -17,11 +19,11 @@ set -eu
 cd "$(dirname "$0")/.."
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ clang doctest-dev libfmt-dev libbenchmark-dev
-# The sanitizers' run-time libraries for clang (only recommended by clang, so not installed with it).
-iecoop_require_packages libclang-rt-14-dev
 # iecoop-check (docs/iecoop-check.md) is built on libclang's C API: its headers come with
 # libclang-14-dev (23 MB to download; clang above already brings the library).
 iecoop_require_packages libclang-14-dev
+# clang's sanitizer libraries and libFuzzer, for the clang build (clang only recommends them).
+iecoop_require_packages libclang-rt-14-dev
 # The slim set of docs/embedded.md: the firmware links with arm-none-eabi-gcc and needs
 # neither libstdc++-arm-none-eabi-newlib's 1.5 GB of libraries nor QEMU's recommends.
 iecoop_require_packages gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
@@ -59,7 +61,7 @@ firmware() {
 # tables for the reports, without the full debug information. The examples are checked with
 # iecoop-check by the g++ build (under AddressSanitizer each check takes three times as long).
 run clang-sanitize clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-  "-DIECOOP_SANITIZE=address;undefined" -DIECOOP_CHECK_EXAMPLES=OFF
+  "-DIECOOP_SANITIZE=address;undefined" -DIECOOP_CHECK_EXAMPLES=OFF -DIECOOP_BUILD_FUZZ=ON
 run gcc-release g++ -DCMAKE_BUILD_TYPE=Release
 firmware cortex-m3
 firmware cortex-m4f
