@@ -226,10 +226,12 @@ namespace {
 
 std::string events;
 
-// A block that reports the bInitRetains its FB_Init gets, and what retain_info() says then.
-struct FB_Counter : function_block<FB_Counter> {
-  FB_Counter() { run_fb_init(*this); }
-  retain<DINT> nCount;
+// A block that reports the bInitRetains its FB_Init gets, and what retain_info() says then;
+// its RETAIN counter is of type Count (DINT, or LINT after a retyping download).
+template <class Count>
+struct FB_Counting : function_block<FB_Counting<Count>> {
+  FB_Counting() { run_fb_init(*this); }
+  retain<Count> nCount;
 
  private:
   friend struct iecoop::block_access;
@@ -239,6 +241,7 @@ struct FB_Counter : function_block<FB_Counter> {
     return TRUE;
   }
 };
+using FB_Counter = FB_Counting<DINT>;
 
 // PROGRAM PRG_Line: a counter, a RETAIN flag and name, a PERSISTENT total
 struct PRG_Line : program<PRG_Line> {
@@ -255,20 +258,8 @@ struct PRG_Line : program<PRG_Line> {
 };
 
 // The same program after a new download that retyped a variable (DINT -> LINT in the block).
-struct FB_Counter2 : function_block<FB_Counter2> {
-  FB_Counter2() { run_fb_init(*this); }
-  retain<LINT> nCount;
-
- private:
-  friend struct iecoop::block_access;
-  BOOL FB_Init(BOOL bInitRetains, BOOL /*bInCopyCode*/) {
-    events +=
-        std::string("init:") + (bInitRetains ? "T" : "F") + ":" + std::string(to_string(retain_info().retain)) + " ";
-    return TRUE;
-  }
-};
 struct PRG_Line2 : program<PRG_Line2> {
-  FB_Counter2 fbCounter;
+  FB_Counting<LINT> fbCounter;
   retain<BOOL> bRunning;
   retain<STRING<8>> sBatch;
   persistent<UDINT> nTotal{100U};

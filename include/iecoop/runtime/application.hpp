@@ -333,9 +333,7 @@ class application {
   bool load(start_mode mode) {
     const retain_kinds wanted = kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
     iecoop::retain_status status;
-    detail::retained_verdict verdict;
-    verdict.retain = wanted.contains(retain_kind::retain) ? retain_load::initial : retain_load::not_kept;
-    verdict.persistent = wanted.contains(retain_kind::persistent) ? retain_load::initial : retain_load::not_kept;
+    detail::retained_verdict verdict = detail::retained_verdict::nothing_found(wanted);
     std::size_t size = 0;
     bool own = false;  // the image is this application's own last stop(): its layout is the current one
     if constexpr (retain_bytes > 0) {

@@ -246,6 +246,13 @@ struct retained_verdict {
   [[nodiscard]] constexpr retain_load operator[](retain_kind kind) const noexcept {
     return kind == retain_kind::retain ? retain : persistent;
   }
+  /// Nothing found yet: `initial` for the kinds in `kinds`, `not_kept` for the others.
+  [[nodiscard]] static constexpr retained_verdict nothing_found(retain_kinds kinds) noexcept {
+    retained_verdict verdict;
+    verdict.retain = kinds.contains(retain_kind::retain) ? retain_load::initial : retain_load::not_kept;
+    verdict.persistent = kinds.contains(retain_kind::persistent) ? retain_load::initial : retain_load::not_kept;
+    return verdict;
+  }
   /// The kinds whose values would be restored (restored, or restored_previous where the
   /// image is the storage's previous one).
   [[nodiscard]] constexpr retain_kinds restorable() const noexcept {
@@ -299,10 +306,7 @@ inline bool retained_values_valid(std::span<const retained_object> objects, reta
  */
 inline retained_verdict check_retained(std::span<const retained_object> objects, retain_kinds kinds,
                                        std::span<const std::byte> in) {
-  retained_verdict verdict;
-  for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
-    verdict[kind] = kinds.contains(kind) ? retain_load::initial : retain_load::not_kept;
-  }
+  retained_verdict verdict = retained_verdict::nothing_found(kinds);
   if (!valid_retained_image(in)) {
     for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
       if (kinds.contains(kind)) verdict[kind] = retain_load::damaged;
