@@ -7,7 +7,9 @@
 #   standard/                        4
 #   io/                              5
 #   runtime/                         6
-#   iecoop.hpp, fmt.hpp, ostream.hpp 7  (the umbrella and the integrations)
+#   trace/                           7  (recorder, writers, watch list: they observe the runtime)
+#   iecoop.hpp, trace.hpp, fmt.hpp,  8  (the umbrella and the integrations)
+#   ostream.hpp
 # A detail/ header is shared machinery: it takes the layer of the highest header it includes
 # (at least 1), and may build on types/ but on nothing above.
 cmake_minimum_required(VERSION 3.25)
@@ -21,6 +23,7 @@ set(rank_pou 3)
 set(rank_standard 4)
 set(rank_io 5)
 set(rank_runtime 6)
+set(rank_trace 7)
 set(detail_ceiling 2)
 
 file(GLOB_RECURSE headers RELATIVE ${INCLUDE_DIR} ${INCLUDE_DIR}/iecoop/*.hpp)
@@ -43,7 +46,7 @@ function(folder_rank header out)
   elseif(header MATCHES "^iecoop/(config|fault)\\.hpp$")
     set(${out} 1 PARENT_SCOPE)
   else()
-    set(${out} 7 PARENT_SCOPE)
+    set(${out} 8 PARENT_SCOPE)
   endif()
 endfunction()
 

@@ -32,6 +32,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/ready_queues.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/runtime/cycle_observer.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/types/time.hpp>
 
@@ -64,6 +65,10 @@ class task_state {
   [[nodiscard]] bool active() const noexcept { return active_; }
   /// The cycles begun since the tasks were last restarted: cycle n of model_execution_time.
   [[nodiscard]] std::uint64_t cycle_number() const noexcept { return cycle_number_; }
+
+  /// Calls `observer` once per cycle of this task, after the cycle's programs ran (see
+  /// cycle_observer): a trace recorder or a watch list samples the task's variables there.
+  void attach(cycle_observer& observer) noexcept { observers_.attach(observer); }
 
   /// In simulation, each cycle of this task takes `each_cycle` of processor time.
   void model_execution_time(LTIME each_cycle) noexcept {
@@ -99,6 +104,7 @@ class task_state {
   LTIME cost_constant_{};
   LTIME (*cost_function_)(std::uint64_t, void*) = nullptr;
   void* cost_context_ = nullptr;
+  detail::cycle_observer_list observers_;
 };
 
 /// What a scheduler drives: the work of a task cycle, at its start and at its end. `task` is
@@ -270,6 +276,7 @@ class scheduler {
     t.remaining_ = t.cost_of(t.cycle_number_);
     ++t.cycle_number_;
     cycles_.begin_cycle(index, now_);
+    t.observers_.notify(now_, t.cycle_number_ - 1);
   }
 
   /// Ends, at now(), the cycle of task `index` under way: the cycles' end_cycle() does its
