@@ -11,4 +11,6 @@
 #pragma once
 
 #include <iecoop/trace/channels.hpp>
+#include <iecoop/trace/csv.hpp>
 #include <iecoop/trace/recorder.hpp>
+#include <iecoop/trace/vcd.hpp>

@@ -90,7 +90,7 @@ constexpr trace_kind trace_kind_of() noexcept {
   if constexpr (std::is_same_v<T, BOOL>) {
     return trace_kind::boolean;
   } else if constexpr (AnyInteger<T>) {
-    return T::kind == integer_kind::bit_string     ? trace_kind::bit_string
+    return T::kind == integer_kind::bit_string   ? trace_kind::bit_string
            : T::kind == integer_kind::signed_int ? trace_kind::signed_integer
                                                  : trace_kind::unsigned_integer;
   } else if constexpr (AnyReal<T>) {
@@ -137,32 +137,33 @@ char* trace_text(char* out, const std::byte* value) {
 
 /// The trace_type of T.
 template <Traceable T>
-inline constexpr trace_type trace_type_of{detail::trace_kind_of<T>(),
-                                          static_cast<std::uint8_t>(sizeof(T)),
-                                          detail::trace_signed<T>(),
-                                          detail::trace_ns_per_count<T>(),
-                                          detail::trace_type_name<T>(),
-                                          max_text_length<T>,
+inline constexpr trace_type trace_type_of{detail::trace_kind_of<T>(),   static_cast<std::uint8_t>(sizeof(T)),
+                                          detail::trace_signed<T>(),    detail::trace_ns_per_count<T>(),
+                                          detail::trace_type_name<T>(), max_text_length<T>,
                                           &detail::trace_text<T>};
 
 /// A recorded value, widened: read the member its type's kind says.
 struct trace_value {
   trace_kind kind = trace_kind::boolean;
+  bool is_signed = false;  ///< `i` holds it (a signed integer, or an enumeration with a signed base)
   union {
-    std::int64_t i;   ///< signed_integer, enumeration with a signed base
-    std::uint64_t u;  ///< boolean (0 or 1), unsigned_integer, bit_string, duration, date_time, enumeration
+    std::int64_t i;   ///< is_signed
+    std::uint64_t u;  ///< boolean (0 or 1), unsigned_integer, bit_string, duration, date_time, unsigned enums
     double f;         ///< real
   };
   constexpr trace_value() noexcept : u(0) {}
 
+  /// TRUE for the same value (NaN is the same as NaN here: a trace shows no change).
+  [[nodiscard]] constexpr bool same_as(const trace_value& other) const noexcept {
+    if (kind != other.kind || is_signed != other.is_signed) return false;
+    if (kind == trace_kind::real) return f == other.f || (f != f && other.f != other.f);
+    return is_signed ? i == other.i : u == other.u;
+  }
+
   /// The value as a number (for scaling a chart): a count for durations and dates.
   [[nodiscard]] constexpr double number() const noexcept {
-    switch (kind) {
-      case trace_kind::real: return f;
-      case trace_kind::signed_integer: return static_cast<double>(i);
-      case trace_kind::enumeration: return static_cast<double>(i);
-      default: return static_cast<double>(u);
-    }
+    if (kind == trace_kind::real) return f;
+    return is_signed ? static_cast<double>(i) : static_cast<double>(u);
   }
 };
 
@@ -190,6 +191,7 @@ namespace detail {
 inline trace_value decode_trace_value(const trace_type& type, const std::byte* values, std::uint16_t offset) noexcept {
   trace_value v;
   v.kind = type.kind;
+  v.is_signed = type.is_signed;
   if (type.kind == trace_kind::boolean) {
     v.u = (std::to_integer<unsigned>(values[offset / 8]) >> (offset % 8)) & 1U;
     return v;
@@ -286,10 +288,9 @@ struct trace_source<V> {
 };
 // Anything else whose get() gives a Traceable value: a located variable.
 template <class V>
-  requires(!Traceable<V>) && (!requires(const V& v) { v.monitor(); }) && (!value_wrapper<V>) &&
-          requires(const V& v) {
-            { v.get() } -> Traceable;
-          }
+  requires(!Traceable<V>) && (!requires(const V& v) { v.monitor(); }) && (!value_wrapper<V>) && requires(const V& v) {
+    { v.get() } -> Traceable;
+  }
 struct trace_source<V> {
   static constexpr bool supported = true;
   static constexpr bool direct = false;
@@ -368,9 +369,10 @@ class trace_channels {
   /// program: `using LOCATED = pins<...>;`) as `scope.name`.
   template <class L>
   bool add_located(std::string_view scope, const L& list) {
-    static_assert(requires { typename L::LOCATED; },
-                  "iecoop: add_located records the variables a type lists in `using LOCATED = pins<...>;`; give "
-                  "the list one, or add its variables one by one");
+    static_assert(
+        requires { typename L::LOCATED; },
+        "iecoop: add_located records the variables a type lists in `using LOCATED = pins<...>;`; give "
+        "the list one, or add its variables one by one");
     return add_members<typename L::LOCATED>(scope, list);
   }
 
@@ -383,10 +385,10 @@ class trace_channels {
   [[nodiscard]] std::size_t find(std::string_view full_name) const noexcept {
     for (std::size_t c = 0; c < count_; ++c) {
       const trace_channel& ch = channels_[c];
-      if (ch.scope.empty() ? full_name == ch.name
-                           : full_name.size() == ch.scope.size() + 1 + ch.name.size() &&
-                                 full_name.starts_with(ch.scope) && full_name[ch.scope.size()] == '.' &&
-                                 full_name.ends_with(ch.name)) {
+      if (ch.scope.empty()
+              ? full_name == ch.name
+              : full_name.size() == ch.scope.size() + 1 + ch.name.size() && full_name.starts_with(ch.scope) &&
+                    full_name[ch.scope.size()] == '.' && full_name.ends_with(ch.name)) {
         return c;
       }
     }
@@ -513,9 +515,8 @@ class trace_channels {
       bool_sources_[bool_count_] = bool_source{direct, object, read};
       channel.offset = static_cast<std::uint16_t>(bool_count_++);
     } else {
-      value_sources_[value_count_++] =
-          value_source{reinterpret_cast<const std::byte*>(address), object, read,
-                       static_cast<std::uint16_t>(value_bytes_), type.bytes};
+      value_sources_[value_count_++] = value_source{reinterpret_cast<const std::byte*>(address), object, read,
+                                                    static_cast<std::uint16_t>(value_bytes_), type.bytes};
       channel.offset = static_cast<std::uint16_t>(value_bytes_);  // after the BOOL bits: see layout()
       value_bytes_ += type.bytes;
     }

@@ -206,11 +206,13 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
   void trigger_when(const O& object, bool (*condition)(const O&), std::size_t pre_trigger,
                     std::size_t post_trigger = fill_buffer) noexcept {
     // The condition is kept as a generic function pointer and called as its own type again.
-    trigger_ = trigger{nullptr, &object, reinterpret_cast<void (*)()>(condition),
-                       [](void (*f)(), const void* o) {
-                         return reinterpret_cast<bool (*)(const O&)>(f)(*static_cast<const O*>(o));
-                       },
-                       trace_edge::rising, true};
+    trigger_ = trigger{
+        nullptr,
+        &object,
+        reinterpret_cast<void (*)()>(condition),
+        [](void (*f)(), const void* o) { return reinterpret_cast<bool (*)(const O&)>(f)(*static_cast<const O*>(o)); },
+        trace_edge::rising,
+        true};
     pre_trigger_ = pre_trigger;
     post_trigger_ = post_trigger;
   }

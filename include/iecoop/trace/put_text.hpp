@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// iecoop/trace/put_text.hpp — numbers as text for the trace writers, through a `put(std::string_view)`,
+// without the heap: each number is formatted into a buffer on the stack.
+// IWYU pragma: private, include <iecoop/trace.hpp>
+#pragma once
+
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include <iecoop/config.hpp>
+#include <iecoop/trace/channels.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop::detail {
+
+template <class Put>
+void put_unsigned(Put& put, std::uint64_t value) {
+  char text[20];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
+}
+
+template <class Put>
+void put_signed(Put& put, std::int64_t value) {
+  char text[21];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
+}
+
+/// The shortest text that reads back as the same double (`1.5`, `1e+20`, `nan`, `-inf`).
+template <class Put>
+void put_real(Put& put, double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
+}
+
+/// `ns` as milliseconds: `21000`, or `0.25` when it is no whole number of them.
+template <class Put>
+void put_milliseconds(Put& put, std::uint64_t ns) {
+  put_unsigned(put, ns / 1'000'000);
+  std::uint64_t fraction = ns % 1'000'000;
+  if (fraction == 0) return;
+  char digits[7] = {'.', '0', '0', '0', '0', '0', '0'};
+  for (std::size_t d = 6; d >= 1; --d) {
+    digits[d] = static_cast<char>('0' + fraction % 10);
+    fraction /= 10;
+  }
+  std::size_t length = 7;
+  while (digits[length - 1] == '0') --length;
+  put(std::string_view(digits, length));
+}
+
+/// A recorded value as a number: BOOL 0 or 1, integers and counts in decimal, REAL shortest.
+template <class Put>
+void put_number(Put& put, const trace_value& value) {
+  if (value.kind == trace_kind::real) {
+    put_real(put, value.f);
+  } else if (value.is_signed) {
+    put_signed(put, value.i);
+  } else {
+    put_unsigned(put, value.u);
+  }
+}
+
+}  // namespace iecoop::detail
+
+#include <iecoop/detail/pop_macros.hpp>
