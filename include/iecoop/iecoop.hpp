@@ -2,7 +2,7 @@
 // iecoop/iecoop.hpp — everything iecoop offers, in one include. (The optional integrations
 // <iecoop/fmt.hpp> and <iecoop/ostream.hpp> are not included: they pull in fmt and
 // <ostream>, which the core never needs; nor is the POSIX real-time runner
-// <iecoop/runtime/realtime.hpp>.)
+// <iecoop/runtime/realtime.hpp> and the watch list <iecoop/trace/watch.hpp>, which use threads.)
 #pragma once
 
 // IWYU pragma: begin_exports
@@ -69,4 +69,7 @@
 #include <iecoop/runtime/retain_storage.hpp>
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/runtime/task.hpp>
+
+// trace/: the trace recorder and its VCD, CSV and SVG writers (CODESYS Trace)
+#include <iecoop/trace.hpp>
 // IWYU pragma: end_exports

@@ -32,6 +32,7 @@
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
+#include <iecoop/pou/variables.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -286,9 +287,9 @@ struct trace_source<V> {
   using value_type = unwrapped_t<const V&>;
   static const value_type* address(const V& v) noexcept { return &v.get(); }
 };
-// Anything else whose get() gives a Traceable value: a located variable.
+// Anything else whose get() gives a Traceable value (not a reference): a located variable.
 template <class V>
-  requires(!Traceable<V>) && (!requires(const V& v) { v.monitor(); }) && (!value_wrapper<V>) && requires(const V& v) {
+  requires(!Traceable<V>) && (!requires(const V& v) { v.monitor(); }) && requires(const V& v) {
     { v.get() } -> Traceable;
   }
 struct trace_source<V> {
@@ -344,7 +345,8 @@ class trace_channels {
       return add_channel(scope, name, trace_type_of<T>, source::address(variable), nullptr, nullptr);
     } else {
       return add_channel(
-          scope, name, trace_type_of<T>, nullptr, &variable, +[](const void* object, std::byte* out) {
+          scope, name, trace_type_of<T>, static_cast<const T*>(nullptr), &variable,
+          +[](const void* object, std::byte* out) {
             const T value = source::read(*static_cast<const std::remove_cvref_t<V>*>(object));
             std::memcpy(static_cast<void*>(out), static_cast<const void*>(&value), sizeof(T));
           });
@@ -357,8 +359,10 @@ class trace_channels {
   /// left out. FALSE if some did not fit.
   template <class B>
   bool add_pins(std::string_view scope, const B& block) {
-    return add_members<inputs_of<B>>(scope, block) & add_members<outputs_of<B>>(scope, block) &
-           add_members<in_outs_of<B>>(scope, block);
+    const bool inputs = add_members<inputs_of<B>>(scope, block);
+    const bool outputs = add_members<outputs_of<B>>(scope, block);
+    const bool in_outs = add_members<in_outs_of<B>>(scope, block);
+    return inputs && outputs && in_outs;
   }
   template <class B>
   bool add_pins(const B& block) {
@@ -479,9 +483,11 @@ class trace_channels {
 
   template <class Pins, class B>
   bool add_members(std::string_view scope, const B& block) {
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-      return (add_member<pin<Pins, I>>(scope, block) & ... & true);
+    bool all = true;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((all = add_member<pin<Pins, I>>(scope, block) && all), ...);
     }(std::make_index_sequence<Pins::size>{});
+    return all;
   }
 
   template <auto Member, class B>

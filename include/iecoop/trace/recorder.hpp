@@ -25,10 +25,12 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <type_traits>
 
 #include <iecoop/config.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/runtime/cycle_observer.hpp>
+#include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
 #include <iecoop/trace/channels.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -201,18 +203,16 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
     pre_trigger_ = pre_trigger;
     post_trigger_ = post_trigger;
   }
-  /// Triggers at the first sample where `condition(object)` is TRUE.
-  template <class O>
-  void trigger_when(const O& object, bool (*condition)(const O&), std::size_t pre_trigger,
+  /// Triggers at the first sample where `condition(object)` is TRUE (a function returning
+  /// BOOL or bool; a lambda without captures converts to one: `+[](const PRG& p) { ... }`).
+  template <class O, class R>
+  void trigger_when(const O& object, R (*condition)(const O&), std::size_t pre_trigger,
                     std::size_t post_trigger = fill_buffer) noexcept {
+    static_assert(std::is_same_v<R, BOOL> || std::is_same_v<R, bool>,
+                  "iecoop: a trigger condition returns BOOL (or bool); compare, e.g. `return p.iCount > 5;`");
     // The condition is kept as a generic function pointer and called as its own type again.
     trigger_ = trigger{
-        nullptr,
-        &object,
-        reinterpret_cast<void (*)()>(condition),
-        [](void (*f)(), const void* o) { return reinterpret_cast<bool (*)(const O&)>(f)(*static_cast<const O*>(o)); },
-        trace_edge::rising,
-        true};
+        nullptr, &object, reinterpret_cast<void (*)()>(condition), &call_condition<O, R>, trace_edge::rising, true};
     pre_trigger_ = pre_trigger;
     post_trigger_ = post_trigger;
   }
@@ -324,6 +324,11 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
     trace_edge edge = trace_edge::rising;
     bool armed = false;
   };
+
+  template <class O, class R>
+  static bool call_condition(void (*f)(), const void* object) {
+    return static_cast<bool>(reinterpret_cast<R (*)(const O&)>(f)(*static_cast<const O*>(object)));
+  }
 
   bool trigger_fires() {
     if (trigger_.variable == nullptr) return trigger_.call(trigger_.condition, trigger_.object);
