@@ -27,8 +27,11 @@ iecoop_require_packages libclang-rt-14-dev
 # The slim set of docs/embedded.md: the firmware links with arm-none-eabi-gcc and needs
 # neither libstdc++-arm-none-eabi-newlib's 1.5 GB of libraries nor QEMU's recommends.
 iecoop_require_packages gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
-for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm; do
-  command -v "$tool" >/dev/null 2>&1 || { echo "iecoop: $tool is missing: the firmware tests cannot run" >&2; exit 1; }
+# The trace writers' real readers (docs/trace.md): GTKWave's vcd2fst and fst2vcd read every VCD,
+# rsvg-convert renders every SVG and xmllint parses it.
+iecoop_require_packages gtkwave librsvg2-bin libxml2-utils
+for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm vcd2fst fst2vcd rsvg-convert xmllint; do
+  command -v "$tool" >/dev/null 2>&1 || { echo "iecoop: $tool is missing: the tests that need it cannot run" >&2; exit 1; }
 done
 
 # The layout of the code (.clang-format), checked first: it takes seconds.
