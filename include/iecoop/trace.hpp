@@ -14,3 +14,4 @@
 #include <iecoop/trace/csv.hpp>
 #include <iecoop/trace/recorder.hpp>
 #include <iecoop/trace/vcd.hpp>
+#include <iecoop/trace/view.hpp>

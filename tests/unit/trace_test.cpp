@@ -398,6 +398,7 @@ TEST_SUITE("trace recorder") {
     CHECK(view.value(2, 0).i == 9);
     CHECK(view.time(0) == ms(70));
     CHECK(view.cycle(2) == 9);
+    CHECK(trace.overwritten() == 7);
     CHECK(view.trigger_index() == trace_view::no_trigger);
     CHECK(trace.state() == trace_state::recording);
   }

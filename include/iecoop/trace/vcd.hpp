@@ -31,7 +31,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/trace/channels.hpp>
 #include <iecoop/trace/put_text.hpp>
-#include <iecoop/trace/recorder.hpp>
+#include <iecoop/trace/view.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
