@@ -1,7 +1,7 @@
 // iecoop-replay: drives one standard function block from a stimulus file and writes the trace
 // of its outputs, for conformance checks against other IEC 61131-3 implementations.
 //
-//     iecoop-replay [--dialect NAME] FB < stimulus.csv > trace.csv
+//     iecoop-replay [--dialect NAME] [--prefix NAME] FB < stimulus.csv > trace.csv
 //
 // FB is one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS (counters: their INT variants), in
 // the dialect NAME (codesys, the default; iec; matiec). The stimulus has the header
@@ -9,8 +9,10 @@
 // to time_ms, assigns the row's inputs, calls the block once and writes the row of the trace:
 // `cycle,time_ms,<inputs as given...>,<outputs...>[,extra columns]`. BOOL is 0 or 1, INT a
 // signed decimal, a TIME a whole number of milliseconds in a column named <pin>_ms. Columns
-// that are no input are copied through, at the end. Bad input: one line on stderr naming the
-// row and column, exit status 2, and nothing on stdout.
+// that are no input are copied through, at the end. With --prefix P, the inputs are the columns
+// named P.<input>: a CSV the trace recorder wrote (<iecoop/trace/csv.hpp>) with the block's pins
+// recorded as P replays as it stands. Bad input: one line on stderr naming the row and column,
+// exit status 2, and nothing on stdout.
 #include "replay.hpp"
 
 #include <cstdio>
@@ -28,9 +30,10 @@ using namespace iecoop_replay;
 constexpr int exit_bad_input = 2;
 
 constexpr std::string_view usage =
-    "usage: iecoop-replay [--dialect NAME] FB < stimulus.csv > trace.csv\n"
+    "usage: iecoop-replay [--dialect NAME] [--prefix NAME] FB < stimulus.csv > trace.csv\n"
     "  FB:      TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS (counters: their INT variants)\n"
-    "  NAME:    codesys (default), iec, matiec\n"
+    "  --dialect: codesys (default), iec, matiec\n"
+    "  --prefix:  the inputs are the columns NAME.<input> (a recorded trace's, e.g. IO_PRG.tJam)\n"
     "  stimulus: header cycle,time_ms,<inputs...>; BOOL 0/1, INT decimal, TIME as <pin>_ms\n";
 
 int fail(const std::string& message) {
@@ -51,6 +54,7 @@ std::string upper(std::string_view text) {
 int main(int argc, char** argv) {
   std::string dialect = "codesys";
   std::optional<std::string> fb;
+  std::string prefix;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -62,6 +66,11 @@ int main(int argc, char** argv) {
       dialect = argv[++i];
     } else if (arg.starts_with("--dialect=")) {
       dialect = std::string(arg.substr(10));
+    } else if (arg == "--prefix") {
+      if (i + 1 >= argc) return fail("--prefix needs a name, e.g. IO_PRG.tJam");
+      prefix = argv[++i];
+    } else if (arg.starts_with("--prefix=")) {
+      prefix = std::string(arg.substr(9));
     } else if (arg.starts_with("-")) {
       return fail("unknown option " + std::string(arg) + "; see iecoop-replay --help");
     } else if (fb) {
@@ -90,11 +99,11 @@ int main(int argc, char** argv) {
     if (std::cin.bad() || std::ferror(stdin) != 0) return fail("could not read the stimulus from standard input");
     std::optional<std::string> trace;
     if (dialect == codesys::dialect::name) {
-      trace = replay_in<codesys::dialect>(*fb, stimulus);
+      trace = replay_in<codesys::dialect>(*fb, stimulus, false, prefix);
     } else if (dialect == iec::dialect::name) {
-      trace = replay_in<iec::dialect>(*fb, stimulus);
+      trace = replay_in<iec::dialect>(*fb, stimulus, false, prefix);
     } else {
-      trace = replay_in<matiec::dialect>(*fb, stimulus);
+      trace = replay_in<matiec::dialect>(*fb, stimulus, false, prefix);
     }
     std::cout << *trace;  // all or nothing: written only once the whole stimulus is good
     std::cout.flush();

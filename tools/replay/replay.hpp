@@ -208,9 +208,20 @@ inline std::string where(std::size_t line, std::string_view column) {
   return text.str();
 }
 
-/// Replays `stimulus` on a fresh block B; returns the trace, or throws input_error.
+/// A column's name without `prefix` and a dot in front: with the prefix `IO_PRG.tJam`, the
+/// column `IO_PRG.tJam.IN` of a recorded trace is the input IN. Without a prefix, the name.
+inline std::string_view unprefixed(std::string_view name, std::string_view prefix) {
+  if (prefix.empty() || name.size() <= prefix.size() + 1 || !name.starts_with(prefix) || name[prefix.size()] != '.') {
+    return prefix.empty() ? name : std::string_view{};
+  }
+  return name.substr(prefix.size() + 1);
+}
+
+/// Replays `stimulus` on a fresh block B; returns the trace, or throws input_error. With a
+/// `prefix`, the inputs are the columns named `<prefix>.<input>` (a trace recorded with
+/// iecoop's trace recorder names a block's pins so) and every other column is copied through.
 template <class B>
-std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_counter) {
+std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_counter, std::string_view prefix = {}) {
   const std::vector<input_pin<B>> inputs = input_pins<B>(is_counter, std::make_index_sequence<inputs_of<B>::size>{});
   const std::vector<output_pin<B>> outputs = output_pins<B>(std::make_index_sequence<outputs_of<B>::size>{});
 
@@ -236,21 +247,23 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
   std::vector<std::ptrdiff_t> column_input(header->size(), -1);  // which input each column sets
   std::vector<bool> seen(inputs.size(), false);
   for (std::size_t c = 2; c < header->size(); ++c) {
-    const std::string& name = (*header)[c];
+    const std::string_view name = unprefixed((*header)[c], prefix);
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       if (name == inputs[i].column || (!inputs[i].alternative.empty() && name == inputs[i].alternative)) {
         if (seen[i])
-          throw input_error{"line 1 (header), column \"" + name + "\": input " + inputs[i].column + " is given twice"};
+          throw input_error{"line 1 (header), column \"" + (*header)[c] + "\": input " + inputs[i].column +
+                            " is given twice"};
         seen[i] = true;
         column_input[c] = static_cast<std::ptrdiff_t>(i);
       }
     }
-    if (name == "cycle" || name == "time_ms")
-      throw input_error{"line 1 (header), column \"" + name + "\": given twice"};
+    if ((*header)[c] == "cycle" || (*header)[c] == "time_ms")
+      throw input_error{"line 1 (header), column \"" + (*header)[c] + "\": given twice"};
   }
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     if (!seen[i]) {
-      throw input_error{"line 1 (header), column \"" + inputs[i].column + "\": missing; " + std::string(fb_name) +
+      const std::string column = prefix.empty() ? inputs[i].column : std::string(prefix) + "." + inputs[i].column;
+      throw input_error{"line 1 (header), column \"" + column + "\": missing; " + std::string(fb_name) +
                         " needs a column for each of its inputs"};
     }
   }
@@ -341,10 +354,11 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
 /// Replays `stimulus` on the block called `fb` in dialect D; nothing if there is no such
 /// block. With check_name_only, only says whether there is one (an empty trace).
 template <Dialect D>
-std::optional<std::string> replay_in(std::string_view fb, std::string_view stimulus, bool check_name_only = false) {
+std::optional<std::string> replay_in(std::string_view fb, std::string_view stimulus, bool check_name_only = false,
+                                     std::string_view prefix = {}) {
   const auto run = [&]<class B>(bool is_counter) -> std::optional<std::string> {
     if (check_name_only) return std::string();
-    return replay<B>(stimulus, fb, is_counter);
+    return replay<B>(stimulus, fb, is_counter, prefix);
   };
   if (fb == "TON") return run.template operator()<TON>(false);
   if (fb == "TOF") return run.template operator()<TOF>(false);
