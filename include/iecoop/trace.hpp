@@ -13,5 +13,6 @@
 #include <iecoop/trace/channels.hpp>
 #include <iecoop/trace/csv.hpp>
 #include <iecoop/trace/recorder.hpp>
+#include <iecoop/trace/svg.hpp>
 #include <iecoop/trace/vcd.hpp>
 #include <iecoop/trace/view.hpp>
