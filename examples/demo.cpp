@@ -11,6 +11,7 @@
 #include <iecoop/fmt.hpp>
 #include <iecoop/iecoop.hpp>
 #include <iecoop/runtime/realtime.hpp>
+#include <iecoop/trace/watch.hpp>
 
 #include <fmt/core.h>
 
@@ -95,18 +96,53 @@ void on_fault(const fault_info& f) {
   fmt::print("*** iecoop fault: {}: {}\n", to_string(f.kind), f.message);
 }
 
+// The trace of the shift (CODESYS Trace on task Fast, record condition "on change"): the I/O,
+// the conveyor's jam timer, the speed setpoint (a PROPERTY), the speed and the part counts.
+// 1 MiB holds the whole 21 s shift; written with --vcd, --csv, --svg after the run.
+using shift_trace = trace_recorder<1024 * 1024, 32>;
+
+// The values the trace records and the watch list shows.
+template <class Channels, class App>
+void add_shift_channels(Channels& channels, App& plc) {
+  using namespace demo;
+  const IO_PRG& io = plc.template get<IO_PRG>();
+  const GVL& gvl = plc.template get<GVL>();
+  channels.add_located("GVL_IO", plc.template get<GVL_IO>());         // the 8 located variables
+  channels.add_pins("IO_PRG.fbConveyor.tJam", io.fbConveyor.tJam);    // IN, PT, Q, ET
+  channels.add("IO_PRG.fbConveyor", "rSpeed", io.fbConveyor.rSpeed);  // PROPERTY: the setpoint
+  channels.add("GVL", "rSpeed", gvl.rSpeed);                          // the speed now
+  channels.add("GVL", "bAtSpeed", gvl.bAtSpeed);
+  channels.add("GVL", "wParts", gvl.wParts);
+  channels.add("SUPERVISION_PRG", "udiParts", plc.template get<SUPERVISION_PRG>().udiParts);
+}
+
+// Writes the trace to `path` with `write(view, put)`; FALSE if the file could not be written.
+template <class Write>
+bool write_trace(const shift_trace& trace, const char* path, Write write) {
+  std::FILE* file = std::fopen(path, "wb");
+  if (file == nullptr) return false;
+  bool good = true;
+  write(trace.view(), [&](std::string_view text) { good = good && std::fwrite(text.data(), 1, text.size(), file) == text.size(); });
+  return std::fclose(file) == 0 && good;
+}
+
 struct options {
   std::optional<demo::E_Motor> motor;
   bool realtime = false;
   double realtime_seconds = 0.0;  // 0: the whole scenario
   bool fifo = false;
+  bool watch = false;
   const char* retain_file = nullptr;
+  const char* vcd_file = nullptr;
+  const char* csv_file = nullptr;
+  const char* svg_file = nullptr;
   bool help = false;
 };
 
 void usage(std::FILE* to) {
   fmt::print(to,
              "usage: iecoop_demo [--motor dol|vfd] [--realtime [SECONDS]] [--fifo] [--retain FILE]\n"
+             "                   [--watch] [--vcd FILE] [--csv FILE] [--svg FILE]\n"
              "\n"
              "A conveyor controlled by a PLC program written with iecoop, run against a simulated\n"
              "belt and operator; prints a trace of the key signals and the tasks' statistics.\n"
@@ -119,8 +155,14 @@ void usage(std::FILE* to) {
              "                       Without it, the scenario runs in simulated time.\n"
              "  --fifo               with --realtime: ask for SCHED_FIFO (needs root or CAP_SYS_NICE;\n"
              "                       without it the demo runs as an ordinary thread)\n"
+             "  --watch              with --realtime: a watch list of the I/O and the conveyor's values,\n"
+             "                       redrawn every 500 ms instead of the trace lines\n"
              "  --retain FILE        keep the RETAIN and PERSISTENT variables in FILE: the counters\n"
              "                       and the drive setting carry over to the next run\n"
+             "  --vcd FILE           write the trace of task Fast (I/O, the jam timer, speeds, counts)\n"
+             "                       as a VCD file for GTKWave\n"
+             "  --csv FILE           ... as CSV (iecoop-replay's format)\n"
+             "  --svg FILE           ... as an SVG timing chart a browser shows\n"
              "  --help               this text\n",
              seconds(LTIME(sim::scenario_length)));
 }
@@ -145,13 +187,25 @@ std::optional<options> parse(int argc, char** argv) {
       }
     } else if (arg == "--fifo") {
       o.fifo = true;
+    } else if (arg == "--watch") {
+      o.watch = true;
     } else if (arg == "--retain" && value != nullptr) {
       o.retain_file = value;
+      ++i;
+    } else if (arg == "--vcd" && value != nullptr) {
+      o.vcd_file = value;
+      ++i;
+    } else if (arg == "--csv" && value != nullptr) {
+      o.csv_file = value;
+      ++i;
+    } else if (arg == "--svg" && value != nullptr) {
+      o.svg_file = value;
       ++i;
     } else {
       return std::nullopt;
     }
   }
+  if (o.watch && !o.realtime) return std::nullopt;  // a watch list watches a running controller
   return o;
 }
 
@@ -189,6 +243,15 @@ int run(const options& opt) {
   fmt::print("\n");
   print_trace_header();
 
+  static shift_trace recorder;  // static: 1 MiB is no stack variable
+  const bool tracing = opt.vcd_file != nullptr || opt.csv_file != nullptr || opt.svg_file != nullptr;
+  if (tracing) {
+    add_shift_channels(recorder, plc);
+    recorder.set_mode(trace_mode::on_change);
+    recorder.attach(plc.task("Fast"));
+    recorder.start();
+  }
+
   TRACE_PRG& trace = plc.get<TRACE_PRG>();
   const LTIME slice = "LTIME#100ms"_iec;  // print the trace every 100 ms of machine time
   const auto wall_start = std::chrono::steady_clock::now();
@@ -206,17 +269,31 @@ int run(const options& opt) {
     realtime_options settings;
     settings.fifo = opt.fifo;
     realtime_runner runner{plc, settings};
+    // --watch: a watch list of the shift's values, redrawn by a thread of its own every 500 ms;
+    // the task's thread only copies the values after a cycle, every 100 ms.
+    watch_list<32> watch{"LTIME#100ms"_iec};
+    std::optional<watch_display<32>> display;
+    if (opt.watch) {
+      add_shift_channels(watch, plc);
+      watch.attach(plc.task("Fast"));
+      display.emplace(watch, stdout, "LTIME#500ms"_iec, "iecoop demo, task Fast (Ctrl-C stops)");
+    }
     const LTIME length = opt.realtime_seconds > 0.0 ? LTIME::from_ticks(static_cast<std::uint64_t>(opt.realtime_seconds * 1e9))
                                                     : LTIME(sim::scenario_length);
     // The runner owns the thread while it runs: run it in slices and print between them.
     for (LTIME done{}; done < length;) {
       const LTIME step = std::min(slice, length - done);
       ended = runner.run(stop_requested, step);
-      print_trace(trace);
+      if (!opt.watch) print_trace(trace);
       if (ended != run_end::time_elapsed) break;
       done += step;
     }
     fifo_active = runner.fifo_active();
+    if (display) {
+      display.reset();  // the display's thread ends
+      watch.detach();
+      fmt::print("\n(watched: {} snapshots of task Fast)\n", watch.snapshots());
+    }
     std::signal(SIGINT, SIG_DFL);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -245,6 +322,31 @@ int run(const options& opt) {
   }
   if (plc.state() == application_state::exception && plc.faulted_task() != nullptr) {
     fmt::print("state:   stopped in exception by the watchdog of task {}\n", plc.faulted_task()->name());
+  }
+  if (tracing) {
+    recorder.stop();
+    const auto report = [&](const char* path, bool written) {
+      if (path == nullptr) return;
+      if (written) {
+        fmt::print("trace:   {} samples of task Fast ({} bytes each, on change) written to {}\n", recorder.size(),
+                   recorder.sample_bytes(), path);
+        if (recorder.overwritten() > 0) fmt::print("         (the {} oldest were overwritten)\n", recorder.overwritten());
+      } else {
+        fmt::print("trace:   could not write {}\n", path);
+        ++faults;
+      }
+    };
+    report(opt.vcd_file, opt.vcd_file != nullptr && write_trace(recorder, opt.vcd_file, [](const trace_view& v, auto put) {
+                           write_vcd(v, put);
+                         }));
+    report(opt.csv_file, opt.csv_file != nullptr && write_trace(recorder, opt.csv_file, [](const trace_view& v, auto put) {
+                           write_csv(v, put);
+                         }));
+    report(opt.svg_file, opt.svg_file != nullptr && write_trace(recorder, opt.svg_file, [](const trace_view& v, auto put) {
+                           svg_options chart;
+                           chart.title = "iecoop demo: the conveyor's shift, task Fast (on change)";
+                           write_svg(v, put, chart);
+                         }));
   }
   plc.stop();  // FB_Exit of every instance; RETAIN and PERSISTENT values saved (to FILE with --retain)
   if (opt.retain_file != nullptr) fmt::print("retain:  saved to {}\n", opt.retain_file);

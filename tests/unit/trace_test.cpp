@@ -752,19 +752,23 @@ TEST_SUITE("trace writers") {
     CHECK(q_seen);
   }
 
-  TEST_CASE("CSV: names are quoted where CSV needs it, dates are IEC literals, times may have a fraction") {
+  TEST_CASE(
+      "CSV: names are quoted where CSV needs it, dates are IEC literals, REAL its float, times may have a fraction") {
     DATE d = "D#2026-11-23"_iec;
     LREAL x = 0.1;
+    REAL y = 0.1F;
     LTIME lt = "LTIME#2us"_iec;
     trace_recorder<1024> trace;
     trace.add("a,b", d);
     trace.add("say \"x\"", x);
     trace.add("lt", lt);
+    trace.add("y", y);
     trace.start();
     cycle_clock::set(LTIME::from_ticks(1'250'000));
     trace.sample();
     std::string csv;
     write_csv(trace.view(), [&](std::string_view s) { csv += s; });
-    CHECK(csv == "cycle,time_ms,\"a,b\",\"say \"\"x\"\"\",lt_ns\n0,1.25,D#2026-11-23,0.1,2000\n");
+    // A REAL as the float it is: 0.1, not the double it widens to (0.10000000149011612).
+    CHECK(csv == "cycle,time_ms,\"a,b\",\"say \"\"x\"\"\",lt_ns,y\n0,1.25,D#2026-11-23,0.1,2000,0.1\n");
   }
 }

@@ -147,6 +147,7 @@ inline constexpr trace_type trace_type_of{detail::trace_kind_of<T>(),   static_c
 struct trace_value {
   trace_kind kind = trace_kind::boolean;
   bool is_signed = false;  ///< `i` holds it (a signed integer, or an enumeration with a signed base)
+  std::uint8_t bytes = 0;  ///< the size of its type: a REAL (4) is shown as the float it is
   union {
     std::int64_t i;   ///< is_signed
     std::uint64_t u;  ///< boolean (0 or 1), unsigned_integer, bit_string, duration, date_time, unsigned enums
@@ -193,6 +194,7 @@ inline trace_value decode_trace_value(const trace_type& type, const std::byte* v
   trace_value v;
   v.kind = type.kind;
   v.is_signed = type.is_signed;
+  v.bytes = type.bytes;
   if (type.kind == trace_kind::boolean) {
     v.u = (std::to_integer<unsigned>(values[offset / 8]) >> (offset % 8)) & 1U;
     return v;

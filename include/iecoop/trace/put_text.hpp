@@ -54,11 +54,24 @@ void put_milliseconds(Put& put, std::uint64_t ns) {
   put(std::string_view(digits, length));
 }
 
+/// The shortest text that reads back as the same REAL (its float, not the double it widens to:
+/// `0.1`, not `0.10000000149011612`), or LREAL.
+template <class Put>
+void put_real(Put& put, const trace_value& value) {
+  if (value.bytes == 4) {
+    char text[24];
+    const auto result = std::to_chars(text, text + sizeof text, static_cast<float>(value.f));
+    put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
+  } else {
+    put_real(put, value.f);
+  }
+}
+
 /// A recorded value as a number: BOOL 0 or 1, integers and counts in decimal, REAL shortest.
 template <class Put>
 void put_number(Put& put, const trace_value& value) {
   if (value.kind == trace_kind::real) {
-    put_real(put, value.f);
+    put_real(put, value);
   } else if (value.is_signed) {
     put_signed(put, value.i);
   } else {

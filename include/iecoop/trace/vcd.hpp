@@ -109,7 +109,7 @@ void put_vcd_value(Put& put, const trace_type& type, const trace_value& value, s
   } else if (vcd_is_real(type, options)) {
     put("r");
     if (type.kind == trace_kind::real) {
-      put_real(put, value.f);
+      put_real(put, value);
     } else {
       // Seconds: the whole seconds exactly, then the rest (a double holds 2^53 exactly).
       const std::uint64_t ns = value.u * type.ns_per_count;
