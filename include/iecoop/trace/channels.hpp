@@ -330,13 +330,16 @@ class trace_channels {
   /// Records `variable` as `name` (a variable, a var<>/output<> wrapper, a VAR_IN_OUT, a
   /// PROPERTY or a located variable).
   template <class V>
-  bool add(std::string_view name, const V& variable) {
-    return add({}, name, variable);
+  bool add(std::string_view name, V&& variable) {
+    return add({}, name, std::forward<V>(variable));
   }
 
   /// Records `variable` as `scope.name`.
   template <class V>
-  bool add(std::string_view scope, std::string_view name, const V& variable) {
+  bool add(std::string_view scope, std::string_view name, V&& variable) {
+    static_assert(std::is_lvalue_reference_v<V>,
+                  "iecoop: a trace records a variable, not a value (the value is gone when the trace reads it); "
+                  "give the variable itself, e.g. trace.add(\"iCount\", prg.iCount)");
     using source = detail::trace_source<std::remove_cvref_t<V>>;
     static_assert(source::supported,
                   "iecoop: a trace records BOOL, integers, bit strings, REAL, LREAL, TIME, LTIME, dates and "
@@ -360,15 +363,19 @@ class trace_channels {
   /// the bare pin names. Pins of a type a trace cannot record (STRING, ARRAY, STRUCT) are
   /// left out. FALSE if some did not fit.
   template <class B>
-  bool add_pins(std::string_view scope, const B& block) {
-    const bool inputs = add_members<inputs_of<B>>(scope, block);
-    const bool outputs = add_members<outputs_of<B>>(scope, block);
-    const bool in_outs = add_members<in_outs_of<B>>(scope, block);
+  bool add_pins(std::string_view scope, B&& block) {
+    static_assert(std::is_lvalue_reference_v<B>,
+                  "iecoop: a trace records the pins of a block instance, not of a temporary (its pins are gone when "
+                  "the trace reads them); give the instance, e.g. trace.add_pins(\"IO_PRG.tJam\", io.tJam)");
+    using block_type = std::remove_cvref_t<B>;
+    const bool inputs = add_members<inputs_of<block_type>>(scope, block);
+    const bool outputs = add_members<outputs_of<block_type>>(scope, block);
+    const bool in_outs = add_members<in_outs_of<block_type>>(scope, block);
     return inputs && outputs && in_outs;
   }
   template <class B>
-  bool add_pins(const B& block) {
-    return add_pins(std::string_view{}, block);
+  bool add_pins(B&& block) {
+    return add_pins(std::string_view{}, std::forward<B>(block));
   }
 
   /// Records every variable of the LOCATED list of `list` (a global variable list or a
