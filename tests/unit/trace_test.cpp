@@ -715,6 +715,28 @@ TEST_SUITE("trace writers") {
     }
   }
 
+  TEST_CASE("VCD and CSV: a REAL is its own shortest text, TIME in seconds is exact") {
+    // The writers format no double themselves (std::to_chars for double is not in a firmware's
+    // link): a REAL or LREAL is written as its type's text, a duration in seconds digit by digit.
+    REAL r = 0.1F;
+    LREAL lr = -2.5e-7;
+    LTIME lt = LTIME::from_ticks(1);
+    trace_recorder<1024> trace;
+    trace.add("r", r);
+    trace.add("lr", lr);
+    trace.add("lt", lt);
+    trace.start();
+    cycle_clock::set(ms(0));
+    trace.sample();
+    std::string vcd;
+    write_vcd(
+        trace.view(), [&](std::string_view s) { vcd += s; }, vcd_options{.time_as_real = true});
+    CHECK(vcd.find("$dumpvars\nr0.1 !\nr-2.5e-07 \"\nr0.000000001 #\n$end\n") != std::string::npos);
+    std::string csv;
+    write_csv(trace.view(), [&](std::string_view s) { csv += s; });
+    CHECK(csv == "cycle,time_ms,r,lr,lt_ns\n0,0,0.1,-2.5e-07,1\n");
+  }
+
   TEST_CASE("CSV: a block's recorded pins replay through iecoop-replay's reader to the same outputs") {
     TON timer;
     trace_recorder<65536> trace;

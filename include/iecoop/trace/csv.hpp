@@ -39,7 +39,8 @@ void put_csv_field(Put& put, std::string_view text) {
   put("\"");
   for (std::size_t start = 0;;) {
     const std::size_t quote = text.find('"', start);
-    put(text.substr(start, quote == std::string_view::npos ? std::string_view::npos : quote + 1 - start));
+    // Up to the quote (or the end), the quote included; not substr(), which may throw.
+    put(std::string_view(text.data() + start, (quote == std::string_view::npos ? text.size() : quote + 1) - start));
     if (quote == std::string_view::npos) break;
     put("\"");
     start = quote + 1;
@@ -88,8 +89,9 @@ void write_csv(const trace_view& view, Put&& put) {
     for (std::size_t c = 0; c < channels.size(); ++c) {
       put(",");
       const trace_type& type = *channels[c].type;
-      if (type.kind == trace_kind::date_time) {
-        char text[64];  // the longest date text is 33 characters (LDT#...)
+      if (type.kind == trace_kind::date_time || type.kind == trace_kind::real) {
+        // The longest date text is 33 characters (LDT#...), an LREAL's 32.
+        char text[64];
         put(std::string_view(text, static_cast<std::size_t>(view.text(i, c, text) - text)));
       } else {
         detail::put_number(put, view.value(i, c));

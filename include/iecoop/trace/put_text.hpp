@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // iecoop/trace/put_text.hpp — numbers as text for the trace writers, through a `put(std::string_view)`,
-// without the heap: each number is formatted into a buffer on the stack.
+// without the heap: each number is formatted into a buffer on the stack. Integers only: a REAL
+// is written as its type's text (trace_view::text()), so that std::to_chars for floating point,
+// which lives in the compiled libstdc++ and not in a firmware's link, is needed only where a
+// REAL or LREAL is traced.
 // IWYU pragma: private, include <iecoop/trace.hpp>
 #pragma once
 
@@ -30,14 +33,6 @@ void put_signed(Put& put, std::int64_t value) {
   put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
 }
 
-/// The shortest text that reads back as the same double (`1.5`, `1e+20`, `nan`, `-inf`).
-template <class Put>
-void put_real(Put& put, double value) {
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
-}
-
 /// `ns` as milliseconds: `21000`, or `0.25` when it is no whole number of them.
 template <class Put>
 void put_milliseconds(Put& put, std::uint64_t ns) {
@@ -54,25 +49,28 @@ void put_milliseconds(Put& put, std::uint64_t ns) {
   put(std::string_view(digits, length));
 }
 
-/// The shortest text that reads back as the same REAL (its float, not the double it widens to:
-/// `0.1`, not `0.10000000149011612`), or LREAL.
+/// `ns` as seconds, exactly: `21`, `1.5`, `0.000000001`.
 template <class Put>
-void put_real(Put& put, const trace_value& value) {
-  if (value.bytes == 4) {
-    char text[24];
-    const auto result = std::to_chars(text, text + sizeof text, static_cast<float>(value.f));
-    put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
-  } else {
-    put_real(put, value.f);
+void put_seconds(Put& put, std::uint64_t ns) {
+  put_unsigned(put, ns / 1'000'000'000);
+  std::uint64_t fraction = ns % 1'000'000'000;
+  if (fraction == 0) return;
+  char digits[10] = {'.', '0', '0', '0', '0', '0', '0', '0', '0', '0'};
+  for (std::size_t d = 9; d >= 1; --d) {
+    digits[d] = static_cast<char>('0' + fraction % 10);
+    fraction /= 10;
   }
+  std::size_t length = 10;
+  while (digits[length - 1] == '0') --length;
+  put(std::string_view(digits, length));
 }
 
-/// A recorded value as a number: BOOL 0 or 1, integers and counts in decimal, REAL shortest.
+/// A recorded value but a REAL or LREAL as a number: BOOL 0 or 1, integers and counts in
+/// decimal. (A REAL is written as its type's text, trace_view::text(): the shortest text that
+/// reads back as the same REAL, `0.1`, not the double it widens to, 0.10000000149011612.)
 template <class Put>
 void put_number(Put& put, const trace_value& value) {
-  if (value.kind == trace_kind::real) {
-    put_real(put, value);
-  } else if (value.is_signed) {
+  if (value.is_signed) {
     put_signed(put, value.i);
   } else {
     put_unsigned(put, value.u);

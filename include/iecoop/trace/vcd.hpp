@@ -11,9 +11,10 @@
 //   BOOL                          wire 1
 //   SINT .. LINT, signed enums    integer 8 .. 64 (two's complement)
 //   USINT .. ULINT, BYTE .. LWORD reg 8 .. 64 (and unsigned enums)
-//   REAL, LREAL                   real 64
+//   REAL, LREAL                   real 64, the shortest text that reads back as the same
+//                                 REAL / LREAL (`0.1`, not the double nearest 0.1F)
 //   TIME, LTIME                   reg 32 / reg 64, a count of ms / ns (options.time_as_real:
-//                                 real 64, in seconds)
+//                                 real 64, in seconds, exact: `1.5`, `0.000000001`)
 //   dates and times of day        reg 32 / 64, a count of their unit
 // The timescale is the largest power of ten (1 ns .. 1 s) that divides every sample's time,
 // so a 1 ms task gives `$timescale 1 ms $end` and times in cycles of its clock. Times are the
@@ -65,7 +66,7 @@ void put_vcd_name(Put& put, std::string_view name) {
   std::size_t start = 0;
   for (std::size_t i = 0; i <= name.size(); ++i) {
     if (i == name.size() || name[i] == ' ' || name[i] == '\t' || name[i] == '\n' || name[i] == '\r') {
-      put(name.substr(start, i - start));
+      put(std::string_view(name.data() + start, i - start));  // not substr(): it may throw
       if (i < name.size()) put("_");
       start = i + 1;
     }
@@ -79,7 +80,8 @@ constexpr std::string_view scope_part(std::string_view scope, std::size_t index)
     if (dot == std::string_view::npos) return {};
     scope.remove_prefix(dot + 1);
   }
-  return scope.substr(0, scope.find('.'));
+  const std::size_t dot = scope.find('.');
+  return std::string_view(scope.data(), dot == std::string_view::npos ? scope.size() : dot);
 }
 constexpr std::size_t scope_depth(std::string_view scope) noexcept {
   if (scope.empty()) return 0;
@@ -100,20 +102,21 @@ constexpr bool vcd_is_real(const trace_type& type, const vcd_options& options) n
   return type.kind == trace_kind::real || (options.time_as_real && type.kind == trace_kind::duration);
 }
 
-/// One value in VCD: `1!`, `b101 "`, `r1.5 #`.
+/// One value in VCD: `1!`, `b101 "`, `r1.5 #`. `real_text` is the IEC text of a REAL or
+/// LREAL value (the shortest text that reads back as the same value: the type's own text, so
+/// that std::to_chars for floating point, which lives in the compiled libstdc++, is linked only
+/// where a REAL or LREAL is traced, as REAL_TO_STRING does).
 template <class Put>
-void put_vcd_value(Put& put, const trace_type& type, const trace_value& value, std::size_t id,
-                   const vcd_options& options) {
+void put_vcd_value(Put& put, const trace_type& type, const trace_value& value, std::string_view real_text,
+                   std::size_t id, const vcd_options& options) {
   if (type.kind == trace_kind::boolean) {
     put(value.u != 0 ? "1" : "0");
   } else if (vcd_is_real(type, options)) {
     put("r");
     if (type.kind == trace_kind::real) {
-      put_real(put, value);
+      put(real_text);
     } else {
-      // Seconds: the whole seconds exactly, then the rest (a double holds 2^53 exactly).
-      const std::uint64_t ns = value.u * type.ns_per_count;
-      put_real(put, static_cast<double>(ns / 1'000'000'000) + static_cast<double>(ns % 1'000'000'000) / 1e9);
+      put_seconds(put, value.u * type.ns_per_count);  // exact: whole seconds, then the fraction
     }
     put(" ");
   } else {
@@ -136,6 +139,18 @@ void put_vcd_value(Put& put, const trace_type& type, const trace_value& value, s
   }
   put_vcd_id(put, id);
   put("\n");
+}
+
+/// Sample i's value of channel c in VCD.
+template <class Put>
+void put_vcd_sample_value(Put& put, const trace_view& view, std::size_t i, std::size_t c, const vcd_options& options) {
+  const trace_type& type = *view.channels()[c].type;
+  char text[64];  // a REAL's or LREAL's text: at most max_text_length<LREAL>, 32 characters
+  std::string_view real_text{};
+  if (type.kind == trace_kind::real) {
+    real_text = std::string_view(text, static_cast<std::size_t>(view.text(i, c, text) - text));
+  }
+  put_vcd_value(put, type, view.value(i, c), real_text, c, options);
 }
 
 }  // namespace detail
@@ -204,7 +219,7 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
   detail::put_unsigned(put, view.time(0).count() / unit);
   put("\n$dumpvars\n");
   for (std::size_t c = 0; c < channels.size(); ++c) {
-    detail::put_vcd_value(put, *channels[c].type, view.value(0, c), c, options);
+    detail::put_vcd_sample_value(put, view, 0, c, options);
   }
   put("$end\n");
   bool last_written = view.size() == 1;
@@ -216,7 +231,7 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
     for (std::size_t c = 0; c < channels.size(); ++c) {
       const trace_value now = view.value(i, c);
       const trace_value before = view.value(i - 1, c);
-      if (!now.same_as(before)) detail::put_vcd_value(put, *channels[c].type, now, c, options);
+      if (!now.same_as(before)) detail::put_vcd_sample_value(put, view, i, c, options);
     }
     last_written = i == view.size() - 1;
   }
