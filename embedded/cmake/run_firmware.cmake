@@ -19,16 +19,8 @@ if(NOT DEFINED STATUS)
   set(STATUS 0)
 endif()
 
-if(QEMU)
-  # -display/-monitor/-serial none: no window, and no device claims the terminal (CI has none).
-  # target=native: QEMU serves semihosting itself; without it the first request faults.
-  set(command ${QEMU} -M ${MACHINE} -display none -monitor none -serial none
-              -semihosting-config enable=on,target=native -kernel ${ELF})
-else()
-  set(command ${ELF})
-endif()
-
-execute_process(COMMAND ${command}
+include(${CMAKE_CURRENT_LIST_DIR}/firmware_command.cmake)
+execute_process(COMMAND ${firmware_command}
   OUTPUT_VARIABLE output
   ERROR_VARIABLE errors
   RESULT_VARIABLE status
