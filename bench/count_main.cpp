@@ -4,16 +4,20 @@
 //
 //   iecoop_bench_count <kernel> <n>       iecoop_bench_count --list
 //
-// Kernels: the workload's scans (workload.hpp), the micro-benchmarks' steps (kernels.hpp)
-// and the scheduler's task cycles (one iteration = 1 ms of simulated time).
+// Kernels: the workload's scans (workload.hpp), the micro-benchmarks' steps (kernels.hpp),
+// the scheduler's task cycles (one iteration = 1 ms of simulated time) and the trace
+// recorder's cycles (trace_programs.hpp: one iteration = the program and one sample; trace_none
+// is the program alone).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <utility>
 
 #include "kernels.hpp"
 #include "scheduler_programs.hpp"
+#include "trace_programs.hpp"
 #include "workload.hpp"
 
 namespace {
@@ -64,6 +68,16 @@ template <std::size_t N>
 void handwritten_task_cycles(std::uint64_t n) {
   scheduler_programs::handwritten_executive<N> executive;
   for (std::uint64_t i = 0; i < n; ++i) executive.run_for(1'000'000);
+}
+
+template <trace_programs::recording How>
+void trace_cycles(std::uint64_t n) {
+  auto traced = std::make_unique<trace_programs::traced_program>(How);
+  for (std::uint64_t i = 0; i < n; ++i) {
+    traced->run_cycle();
+    barrier();
+  }
+  keep(*traced);
 }
 
 struct kernel {
@@ -128,6 +142,11 @@ const kernel all_kernels[] = {
     {"task_cycle_handwritten_1", handwritten_task_cycles<1>},
     {"task_cycle_handwritten_8", handwritten_task_cycles<8>},
     {"task_cycle_handwritten_32", handwritten_task_cycles<32>},
+    {"trace_none", trace_cycles<trace_programs::recording::none>},
+    {"trace_every_cycle", trace_cycles<trace_programs::recording::every_cycle>},
+    {"trace_every_cycle_trigger_armed", trace_cycles<trace_programs::recording::every_cycle_trigger_armed>},
+    {"trace_on_change", trace_cycles<trace_programs::recording::on_change>},
+    {"trace_on_change_unchanged", trace_cycles<trace_programs::recording::on_change_unchanged>},
 };
 
 }  // namespace
