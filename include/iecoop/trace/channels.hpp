@@ -155,13 +155,6 @@ struct trace_value {
   };
   constexpr trace_value() noexcept : u(0) {}
 
-  /// TRUE for the same value (NaN is the same as NaN here: a trace shows no change).
-  [[nodiscard]] constexpr bool same_as(const trace_value& other) const noexcept {
-    if (kind != other.kind || is_signed != other.is_signed) return false;
-    if (kind == trace_kind::real) return f == other.f || (f != f && other.f != other.f);
-    return is_signed ? i == other.i : u == other.u;
-  }
-
   /// The value as a number (for scaling a chart): a count for durations and dates.
   [[nodiscard]] constexpr double number() const noexcept {
     if (kind == trace_kind::real) return f;

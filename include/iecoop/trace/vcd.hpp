@@ -229,9 +229,7 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
     detail::put_unsigned(put, view.time(i).count() / unit);
     put("\n");
     for (std::size_t c = 0; c < channels.size(); ++c) {
-      const trace_value now = view.value(i, c);
-      const trace_value before = view.value(i - 1, c);
-      if (!now.same_as(before)) detail::put_vcd_sample_value(put, view, i, c, options);
+      if (!view.same_value(i, i - 1, c)) detail::put_vcd_sample_value(put, view, i, c, options);
     }
     last_written = i == view.size() - 1;
   }

@@ -77,6 +77,18 @@ class trace_view {
     }
     return channel.type->text(out, at(i) + header_bytes + channel.offset);
   }
+  /// TRUE if channel c holds the same bytes in samples i and j (a NaN is the same NaN; the
+  /// bytes, not the values, so that no floating point is needed to compare a REAL).
+  [[nodiscard]] bool same_value(std::size_t i, std::size_t j, std::size_t c) const noexcept {
+    const trace_channel& channel = channels_[c];
+    const std::byte* const a = at(i) + header_bytes;
+    const std::byte* const b = at(j) + header_bytes;
+    if (channel.type->kind == trace_kind::boolean) {
+      const std::byte bit{static_cast<unsigned char>(1U << (channel.offset % 8))};
+      return ((a[channel.offset / 8] ^ b[channel.offset / 8]) & bit) == std::byte{0};
+    }
+    return std::memcmp(a + channel.offset, b + channel.offset, channel.type->bytes) == 0;
+  }
   /// TRUE if sample i holds the same values as sample j (they differ only in time).
   [[nodiscard]] bool same_values(std::size_t i, std::size_t j) const noexcept {
     return std::memcmp(at(i) + header_bytes, at(j) + header_bytes, sample_bytes_ - header_bytes) == 0;
