@@ -105,8 +105,10 @@ struct PRG_Belt : program<PRG_Belt> {
   using LOCATED = pins<&PRG_Belt::bStart, &PRG_Belt::bMotor, &PRG_Belt::iParts>;
 
   var<INT> nCycles;
+  var<BOOL> bLate;
   void body() {
     nCycles = nCycles + 1;
+    bLate = nCycles >= 3;
     bMotor = bStart;
     if (bStart) iParts = iParts + 1;
   }
@@ -378,6 +380,31 @@ TEST_SUITE("trace recorder") {
     CHECK(view.value(4, 3).i == 5);
     CHECK(view.time(4) == ms(4));
     CHECK(view.cycle(4) == 4);
+  }
+
+  TEST_CASE("a trigger on a var<> BOOL and on a located %IX BOOL") {
+    application plc{task<PRG_Belt>{"Fast", cyclic{"T#1ms"_iec}, 0}, use_image<image>{}};
+    simulated_io<image> field;
+    plc.connect(field);
+    plc.start();
+    PRG_Belt& belt = plc.get<PRG_Belt>();
+    trace_recorder<1024> on_var;
+    trace_recorder<1024> on_input;
+    for (auto* trace : {&on_var, &on_input}) {
+      trace->add("nCycles", belt.nCycles);
+      trace->attach(plc.task("Fast"));
+    }
+    on_var.trigger_on(belt.bLate, trace_edge::rising, 1, 1);
+    on_input.trigger_on(belt.bStart, trace_edge::rising, 1, 1);
+    on_var.start();
+    on_input.start();
+    plc.run_for(ms(5));
+    field.set<"%IX0.0">(TRUE);
+    plc.run_for(ms(5));
+    REQUIRE(on_var.complete());
+    CHECK(on_var.view().value(on_var.view().trigger_index(), 0).i == 3);
+    REQUIRE(on_input.complete());
+    CHECK(on_input.view().value(on_input.view().trigger_index(), 0).i == 6);  // latched at the 6th cycle
   }
 
   TEST_CASE("the ring buffer keeps the newest samples, oldest first") {

@@ -110,25 +110,49 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
   void set_mode(trace_mode mode) noexcept { mode_ = mode; }
   [[nodiscard]] trace_mode mode() const noexcept { return mode_; }
 
-  /// Triggers on an edge of `variable`. The first sample compares with the value the
-  /// variable had at start(). pre_trigger is clamped to capacity() - 1, post_trigger to the
-  /// room left after it.
-  void trigger_on(const BOOL& variable, trace_edge edge, std::size_t pre_trigger,
-                  std::size_t post_trigger = fill_buffer) noexcept {
-    trigger_ = trigger{&detail::scalar_access::ref(variable), nullptr, nullptr, nullptr, edge, true};
+  /// Triggers on an edge of the BOOL `variable` (a variable, a var<>/output<> wrapper, a
+  /// located %IX/%QX, a PROPERTY). The first sample compares with the value the variable had at
+  /// start(). pre_trigger is clamped to capacity() - 1, post_trigger to the room left after it.
+  template <class V>
+  void trigger_on(V&& variable, trace_edge edge, std::size_t pre_trigger, std::size_t post_trigger = fill_buffer) {
+    static_assert(std::is_lvalue_reference_v<V>,
+                  "iecoop: a trace triggers on a variable, not on a value (the value is gone when the trace reads "
+                  "it); give a BOOL variable, or use trigger_when for a condition");
+    using source = detail::trace_source<std::remove_cvref_t<V>>;
+    static_assert(source::supported && std::is_same_v<typename source::value_type, BOOL>,
+                  "iecoop: trigger_on takes a BOOL variable; for a condition on other values use trigger_when");
+    trigger_ = trigger{};
+    if constexpr (source::direct) {
+      trigger_.variable = &detail::scalar_access::ref(*source::address(variable));
+    } else {
+      trigger_.object = &variable;
+      trigger_.read = [](const void* object) {
+        return static_cast<bool>(source::read(*static_cast<const std::remove_cvref_t<V>*>(object)));
+      };
+    }
+    trigger_.edge = edge;
+    trigger_.armed = true;
     pre_trigger_ = pre_trigger;
     post_trigger_ = post_trigger;
   }
   /// Triggers at the first sample where `condition(object)` is TRUE (a function returning
   /// BOOL or bool; a lambda without captures converts to one: `+[](const PRG& p) { ... }`).
   template <class O, class R>
-  void trigger_when(const O& object, R (*condition)(const O&), std::size_t pre_trigger,
+  void trigger_when(O&& object, R (*condition)(const std::remove_cvref_t<O>&), std::size_t pre_trigger,
                     std::size_t post_trigger = fill_buffer) noexcept {
+    static_assert(std::is_lvalue_reference_v<O>,
+                  "iecoop: a trigger condition reads an object that lives as long as the trace (a program, a "
+                  "block, a variable), not a temporary");
     static_assert(std::is_same_v<R, BOOL> || std::is_same_v<R, bool>,
                   "iecoop: a trigger condition returns BOOL (or bool); compare, e.g. `return p.iCount > 5;`");
+    using object_type = std::remove_cvref_t<O>;
+    trigger_ = trigger{};
+    trigger_.object = &object;
     // The condition is kept as a generic function pointer and called as its own type again.
-    trigger_ = trigger{
-        nullptr, &object, reinterpret_cast<void (*)()>(condition), &call_condition<O, R>, trace_edge::rising, true};
+    trigger_.condition = reinterpret_cast<void (*)()>(condition);
+    trigger_.call = &call_condition<object_type, R>;
+    trigger_.level = true;
+    trigger_.armed = true;
     pre_trigger_ = pre_trigger;
     post_trigger_ = post_trigger;
   }
@@ -158,7 +182,7 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
     manual_cycle_ = 0;
     pre_ = pre_trigger_ < capacity() ? pre_trigger_ : capacity() - 1;
     post_ = post_trigger_ < capacity() - 1 - pre_ ? post_trigger_ : capacity() - 1 - pre_;
-    previous_trigger_ = trigger_.variable != nullptr && *trigger_.variable;
+    previous_trigger_ = trigger_.armed && !trigger_.level && read_trigger();
     state_ = trace_state::recording;
     this->lock_channels(true);
     return true;
@@ -241,11 +265,13 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
 
  private:
   struct trigger {
-    const bool* variable = nullptr;
+    const bool* variable = nullptr;  // a BOOL in memory, or read(object)
     const void* object = nullptr;
-    void (*condition)() = nullptr;
+    bool (*read)(const void*) = nullptr;
+    void (*condition)() = nullptr;  // trigger_when: call(condition, object)
     bool (*call)(void (*)(), const void*) = nullptr;
     trace_edge edge = trace_edge::rising;
+    bool level = false;  // trigger_when: fires where the condition holds
     bool armed = false;
   };
 
@@ -254,15 +280,19 @@ class trace_recorder : public trace_channels<MaxChannels>, private cycle_observe
     return static_cast<bool>(reinterpret_cast<R (*)(const O&)>(f)(*static_cast<const O*>(object)));
   }
 
+  [[nodiscard]] bool read_trigger() const {
+    if (trigger_.level) return trigger_.call(trigger_.condition, trigger_.object);
+    return trigger_.variable != nullptr ? *trigger_.variable : trigger_.read(trigger_.object);
+  }
+
   bool trigger_fires() {
-    if (trigger_.variable == nullptr) return trigger_.call(trigger_.condition, trigger_.object);
-    const bool now = *trigger_.variable;
+    const bool now = read_trigger();
+    if (trigger_.level) return now;
     const bool before = previous_trigger_;
     previous_trigger_ = now;
-    const bool fires = trigger_.edge == trace_edge::rising    ? (now && !before)
-                       : trigger_.edge == trace_edge::falling ? (!now && before)
-                                                              : now != before;
-    return fires;
+    return trigger_.edge == trace_edge::rising    ? (now && !before)
+           : trigger_.edge == trace_edge::falling ? (!now && before)
+                                                  : now != before;
   }
 
   alignas(8) std::byte storage_[Bytes]{};
