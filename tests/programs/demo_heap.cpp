@@ -1,11 +1,11 @@
 // "The core never allocates after start-up" (DEVELOPERS.md), shown on the whole demo
 // application: the programs, tasks and global variable lists of examples/conveyor.hpp (the
 // demo's own, demo::make_conveyor()), run as the demo runs them. Every heap allocation is
-// counted, phase by phase: operator new in all its forms (new, new[], aligned, nothrow),
-// replaced here; and the C heap's blocks (malloc, calloc, realloc, aligned_alloc,
-// posix_memalign, and so those behind operator new), through AddressSanitizer's allocator
-// hooks in a build with it, else by replacing malloc and its kin on glibc (which supports it
-// and exports its own as __libc_malloc and kin), elsewhere not at all (the output says so).
+// counted, phase by phase (with a trace recorder on task Fast, written as VCD, CSV and SVG):
+// operator new in all its forms (new, new[], aligned, nothrow), replaced here; and the C heap's blocks (malloc, calloc,
+// realloc, aligned_alloc, posix_memalign, and so those behind operator new), through AddressSanitizer's allocator hooks
+// in a build with it, else by replacing malloc and its kin on glibc (which supports it and exports its own as
+// __libc_malloc and kin), elsewhere not at all (the output says so).
 //
 // Before start() (static initialisation, the application's construction) and in the first
 // start() allocations are reported but allowed; from the end of start() on every phase must
@@ -32,6 +32,9 @@
 
 #include <iecoop/runtime/file_storage.hpp>
 #include <iecoop/runtime/realtime.hpp>
+#include <iecoop/trace.hpp>
+
+#include <string_view>
 
 #include "conveyor.hpp"
 
@@ -327,9 +330,32 @@ int main(int argc, char** argv) {
   });
   expect(plc.state() == application_state::running, "start(): the application does not run");
 
-  // From here on, nothing may allocate.
-  phase("the simulated scenario (21 s, as iecoop_demo)", rule::zero,
+  // From here on, nothing may allocate: the trace recorder (as the demo's --svg configures it)
+  // neither when it is set up, nor when it samples, nor when it is written.
+  static trace_recorder<1024 * 1024, 32> shift_trace;
+  phase("a trace recorder set up and started on task Fast", rule::zero, [&] {
+    const demo::IO_PRG& io = plc.get<demo::IO_PRG>();
+    shift_trace.add_located("GVL_IO", plc.get<demo::GVL_IO>());
+    shift_trace.add_pins("IO_PRG.fbConveyor.tJam", io.fbConveyor.tJam);
+    shift_trace.add("IO_PRG.fbConveyor", "rSpeed", io.fbConveyor.rSpeed);
+    shift_trace.add("GVL", "rSpeed", plc.get<demo::GVL>().rSpeed);
+    shift_trace.set_mode(trace_mode::on_change);
+    shift_trace.attach(plc.task("Fast"));
+    shift_trace.start();
+  });
+  phase("the simulated scenario (21 s, as iecoop_demo), traced", rule::zero,
         [&] { run_simulated(plc, LTIME(sim::scenario_length)); });
+  std::size_t trace_bytes = 0;
+  phase("the trace written as VCD, CSV and SVG", rule::zero, [&] {
+    shift_trace.stop();
+    const auto count = [&](std::string_view text) { trace_bytes += text.size(); };
+    write_vcd(shift_trace.view(), count);
+    write_csv(shift_trace.view(), count);
+    write_svg(shift_trace.view(), count);
+    shift_trace.detach();
+  });
+  expect(shift_trace.size() > 10000 && shift_trace.overwritten() == 0 && trace_bytes > 500000,
+         "the trace of the scenario is not the demo's (more than 10000 samples, none lost, written in full)");
   {
     const demo::SUPERVISION_PRG& s = plc.get<demo::SUPERVISION_PRG>();
     expect(fast_cycles(plc) == 21000 && s.udiParts == 19U && s.udiBatches == 2U && s.uiJams == 1U &&
