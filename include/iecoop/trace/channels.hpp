@@ -338,10 +338,13 @@ class trace_channels {
                   "iecoop: a trace records BOOL, integers, bit strings, REAL, LREAL, TIME, LTIME, dates and "
                   "enumerations (as variables, wrappers, VAR_IN_OUT, PROPERTYs or located variables); record a "
                   "STRING, ARRAY or STRUCT element by element");
-    using T = typename source::value_type;
-    if constexpr (source::direct) {
+    if constexpr (!source::supported) {
+      return false;  // refused above; no further errors
+    } else if constexpr (source::direct) {
+      using T = typename source::value_type;
       return add_channel(scope, name, trace_type_of<T>, source::address(variable), nullptr, nullptr);
     } else {
+      using T = typename source::value_type;
       return add_channel(
           scope, name, trace_type_of<T>, static_cast<const T*>(nullptr), &variable,
           +[](const void* object, std::byte* out) {
