@@ -38,12 +38,7 @@ if(NOT VCD2FST OR NOT FST2VCD)
 endif()
 
 # --- The firmware's output, and the VCD in it ----------------------------------------------
-include(${CMAKE_CURRENT_LIST_DIR}/firmware_command.cmake)
-execute_process(COMMAND ${firmware_command}
-  OUTPUT_VARIABLE output
-  ERROR_VARIABLE errors
-  RESULT_VARIABLE status
-  TIMEOUT ${TIMEOUT})
+include(${CMAKE_CURRENT_LIST_DIR}/firmware_command.cmake)  # runs ELF: output, errors, status
 if(NOT status STREQUAL "0")
   message(FATAL_ERROR "${ELF} ended with status '${status}', expected 0; it printed:\n${output}\n${errors}")
 endif()

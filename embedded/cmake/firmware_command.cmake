@@ -1,6 +1,6 @@
-# The command that runs a firmware image, for the test scripts (run_firmware.cmake,
-# check_trace_vcd.cmake): included by a `cmake -P` script that has ELF and, for the target,
-# QEMU and MACHINE. Sets `firmware_command`.
+# Runs a firmware image, for the test scripts (run_firmware.cmake, check_trace_vcd.cmake):
+# included by a `cmake -P` script that has ELF, TIMEOUT and, for the target, QEMU and MACHINE.
+# Sets `output` (stdout), `errors` (stderr) and `status` (the exit status, or why it failed).
 #
 # With QEMU, the image runs on the board with semihosting (its text arrives on stdout, its
 # exit status becomes QEMU's); without, ELF is a host executable (the host twin of the same
@@ -13,3 +13,8 @@ if(QEMU)
 else()
   set(firmware_command ${ELF})
 endif()
+execute_process(COMMAND ${firmware_command}
+  OUTPUT_VARIABLE output
+  ERROR_VARIABLE errors
+  RESULT_VARIABLE status
+  TIMEOUT ${TIMEOUT})

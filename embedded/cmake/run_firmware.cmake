@@ -19,12 +19,7 @@ if(NOT DEFINED STATUS)
   set(STATUS 0)
 endif()
 
-include(${CMAKE_CURRENT_LIST_DIR}/firmware_command.cmake)
-execute_process(COMMAND ${firmware_command}
-  OUTPUT_VARIABLE output
-  ERROR_VARIABLE errors
-  RESULT_VARIABLE status
-  TIMEOUT ${TIMEOUT})
+include(${CMAKE_CURRENT_LIST_DIR}/firmware_command.cmake)  # runs ELF: output, errors, status
 file(READ ${EXPECTED} expected)
 
 message("${output}")

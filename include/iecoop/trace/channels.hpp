@@ -118,9 +118,7 @@ constexpr bool trace_signed() noexcept {
 
 template <class T>
 constexpr std::uint64_t trace_ns_per_count() noexcept {
-  if constexpr (AnyDuration<T>) {
-    return static_cast<std::uint64_t>(T::period::num * 1'000'000'000 / T::period::den);
-  } else if constexpr (AnyDate<T>) {
+  if constexpr (AnyDuration<T> || AnyDate<T>) {
     return ns_per_tick<T>;
   } else {
     return 0;
@@ -182,6 +180,19 @@ void put_channel_name(const trace_channel& channel, Put&& put, std::string_view 
 
 namespace detail {
 
+/// `v` with the integer of U's width at `p`, sign-extended where v.is_signed.
+template <class U>
+trace_value widen(trace_value v, const std::byte* p) noexcept {
+  U x;
+  std::memcpy(&x, p, sizeof x);
+  if (v.is_signed) {
+    v.i = static_cast<std::make_signed_t<U>>(x);
+  } else {
+    v.u = x;
+  }
+  return v;
+}
+
 /// Decodes a value of `type` from its bytes in a sample.
 inline trace_value decode_trace_value(const trace_type& type, const std::byte* values, std::uint16_t offset) noexcept {
   trace_value v;
@@ -203,37 +214,12 @@ inline trace_value decode_trace_value(const trace_type& type, const std::byte* v
     }
     return v;
   }
-  std::uint64_t u = 0;
   switch (type.bytes) {
-    case 1: {
-      std::uint8_t x;
-      std::memcpy(&x, p, 1);
-      u = x;
-      if (type.is_signed) v.i = static_cast<std::int8_t>(x);
-      break;
-    }
-    case 2: {
-      std::uint16_t x;
-      std::memcpy(&x, p, 2);
-      u = x;
-      if (type.is_signed) v.i = static_cast<std::int16_t>(x);
-      break;
-    }
-    case 4: {
-      std::uint32_t x;
-      std::memcpy(&x, p, 4);
-      u = x;
-      if (type.is_signed) v.i = static_cast<std::int32_t>(x);
-      break;
-    }
-    default: {
-      std::memcpy(&u, p, 8);
-      if (type.is_signed) v.i = static_cast<std::int64_t>(u);
-      break;
-    }
+    case 1: return widen<std::uint8_t>(v, p);
+    case 2: return widen<std::uint16_t>(v, p);
+    case 4: return widen<std::uint32_t>(v, p);
+    default: return widen<std::uint64_t>(v, p);
   }
-  if (!type.is_signed) v.u = u;
-  return v;
 }
 
 /// How to read a recorded source of type V: directly from memory (a variable), or by a call

@@ -7,62 +7,61 @@
 // IWYU pragma: private, include <iecoop/trace.hpp>
 #pragma once
 
-#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
 #include <iecoop/config.hpp>
 #include <iecoop/trace/channels.hpp>
+#include <iecoop/types/literal_text.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
 namespace iecoop::detail {
 
+/// In the value's own width, as to_text writes integers (no 64-bit division where it fits 32).
 template <class Put>
 void put_unsigned(Put& put, std::uint64_t value) {
   char text[20];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
+  const char* const end =
+      value <= 0xFFFF'FFFFU ? write_unsigned(text, static_cast<std::uint32_t>(value)) : write_unsigned(text, value);
+  put(std::string_view(text, static_cast<std::size_t>(end - text)));
 }
 
 template <class Put>
 void put_signed(Put& put, std::int64_t value) {
-  char text[21];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  put(std::string_view(text, static_cast<std::size_t>(result.ptr - text)));
+  if (value < 0) put("-");
+  // The magnitude, INT64_MIN's too.
+  put_unsigned(put,
+               value < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(value) : static_cast<std::uint64_t>(value));
+}
+
+/// `ns` in units of `unit_ns` (a power of ten up to 1 s), exactly: `21000`, `0.25`, `0.000000001`.
+template <class Put>
+void put_decimal(Put& put, std::uint64_t ns, std::uint64_t unit_ns) {
+  put_unsigned(put, ns / unit_ns);
+  std::uint64_t fraction = ns % unit_ns;
+  if (fraction == 0) return;
+  char digits[10] = {'.'};
+  std::size_t length = 1;
+  for (std::uint64_t place = unit_ns / 10; place > 0; place /= 10) {
+    digits[length++] = static_cast<char>('0' + fraction / place);
+    fraction %= place;
+  }
+  while (digits[length - 1] == '0') --length;
+  put(std::string_view(digits, length));
 }
 
 /// `ns` as milliseconds: `21000`, or `0.25` when it is no whole number of them.
 template <class Put>
 void put_milliseconds(Put& put, std::uint64_t ns) {
-  put_unsigned(put, ns / 1'000'000);
-  std::uint64_t fraction = ns % 1'000'000;
-  if (fraction == 0) return;
-  char digits[7] = {'.', '0', '0', '0', '0', '0', '0'};
-  for (std::size_t d = 6; d >= 1; --d) {
-    digits[d] = static_cast<char>('0' + fraction % 10);
-    fraction /= 10;
-  }
-  std::size_t length = 7;
-  while (digits[length - 1] == '0') --length;
-  put(std::string_view(digits, length));
+  put_decimal(put, ns, 1'000'000);
 }
 
 /// `ns` as seconds, exactly: `21`, `1.5`, `0.000000001`.
 template <class Put>
 void put_seconds(Put& put, std::uint64_t ns) {
-  put_unsigned(put, ns / 1'000'000'000);
-  std::uint64_t fraction = ns % 1'000'000'000;
-  if (fraction == 0) return;
-  char digits[10] = {'.', '0', '0', '0', '0', '0', '0', '0', '0', '0'};
-  for (std::size_t d = 9; d >= 1; --d) {
-    digits[d] = static_cast<char>('0' + fraction % 10);
-    fraction /= 10;
-  }
-  std::size_t length = 10;
-  while (digits[length - 1] == '0') --length;
-  put(std::string_view(digits, length));
+  put_decimal(put, ns, 1'000'000'000);
 }
 
 /// A recorded value but a REAL or LREAL as a number: BOOL 0 or 1, integers and counts in
