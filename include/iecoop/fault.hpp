@@ -37,10 +37,23 @@ enum class fault_kind : std::uint8_t {
   null_pointer,          ///< a dereferenced null POINTER or invalid REFERENCE (CODESYS: CheckPointer)
 };
 
-/// A fault as the handler sees it. `message` points to a string literal.
+/// A fault as the handler sees it. `message` points to a string literal; `task` and `pou`
+/// name the task whose cycle was running and the program it was calling when the fault
+/// happened (nullptr outside a task cycle, and for a fault of the task itself, such as a
+/// watchdog, `pou`). Both are set by the application's scheduler (fault_context).
 struct fault_info {
   fault_kind kind;
   const char* message;
+  const char* task = nullptr;
+  const char* pou = nullptr;
+};
+
+/// Where the code that runs now was called from: the task whose cycle is under way and the
+/// program it is calling. The scheduler and its task cycles keep it; fault() reads it. One
+/// per process, as the scheduler runs the cycles of all tasks from one thread.
+struct fault_context {
+  const char* task = nullptr;
+  const char* pou = nullptr;
 };
 
 /// A fault handler. It may return; the faulting operation then completes with its
@@ -80,6 +93,15 @@ using fault_handler = void (*)(const fault_info&);
   std::fputs(to_string(fault.kind), stderr);
   std::fputs(": ", stderr);
   std::fputs(fault.message, stderr);
+  if (fault.task != nullptr) {
+    std::fputs(" (task ", stderr);
+    std::fputs(fault.task, stderr);
+    if (fault.pou != nullptr) {
+      std::fputs(", program ", stderr);
+      std::fputs(fault.pou, stderr);
+    }
+    std::fputs(")", stderr);
+  }
   std::fputs("\n", stderr);
 #endif
   std::abort();
@@ -87,7 +109,25 @@ using fault_handler = void (*)(const fault_info&);
 
 namespace detail {
 inline fault_handler current_fault_handler = &default_fault_handler;
+inline fault_context current_fault_context{};
+
+/// Sets the fault context for as long as it lives and restores the previous one after.
+class fault_context_scope {
+ public:
+  explicit fault_context_scope(fault_context context) noexcept : previous_(current_fault_context) {
+    current_fault_context = context;
+  }
+  fault_context_scope(const fault_context_scope&) = delete;
+  fault_context_scope& operator=(const fault_context_scope&) = delete;
+  ~fault_context_scope() { current_fault_context = previous_; }
+
+ private:
+  fault_context previous_;
+};
 }  // namespace detail
+
+/// The task and program running now (both nullptr outside a task cycle).
+[[nodiscard]] inline fault_context current_fault_context() noexcept { return detail::current_fault_context; }
 
 /// Installs `handler` (nullptr restores the default) and returns the previous one.
 /// Install handlers at start-up or in tests, not while tasks run concurrently.
@@ -102,7 +142,11 @@ inline fault_handler set_fault_handler(fault_handler handler) noexcept {
 
 /// Reports a fault to the installed handler. Not constexpr on purpose: a fault reached
 /// during constant evaluation is a compile error.
-inline void fault(fault_kind kind, const char* message) { detail::current_fault_handler(fault_info{kind, message}); }
+/// The fault carries the current fault context: the task and the program running.
+inline void fault(fault_kind kind, const char* message) {
+  const fault_context where = detail::current_fault_context;
+  detail::current_fault_handler(fault_info{kind, message, where.task, where.pou});
+}
 
 }  // namespace iecoop
 

@@ -91,6 +91,25 @@ constexpr std::string_view type_name() noexcept {
   return argument_spelling(type_signature<T>(), "T = ");
 }
 
+/// The name of the type T without its namespaces and enclosing classes (`E_State`, `IO_PRG`;
+/// a template's arguments keep theirs).
+template <class T>
+constexpr std::string_view short_type_name() noexcept {
+  constexpr std::string_view name = type_name<T>();
+  const std::size_t angle = name.find('<');
+  const std::size_t colons = name.substr(0, angle).rfind("::");
+  return colons == std::string_view::npos ? name : name.substr(colons + 2);
+}
+
+/// short_type_name<T>() as a string ending in '\0', for a C interface (fault_info).
+template <class T>
+inline constexpr auto short_type_name_c = [] {
+  constexpr std::string_view name = short_type_name<T>();
+  std::array<char, name.size() + 1> text{};
+  for (std::size_t i = 0; i < name.size(); ++i) text[i] = name[i];
+  return text;
+}();
+
 template <class T>
 struct is_std_array : std::false_type {};
 template <class T, std::size_t N>

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // iecoop/runtime/cycle_observer.hpp — something that looks at a task's variables once per cycle of
 // the task, right after its programs ran: a trace recorder (<iecoop/trace.hpp>) or a watch list
-// (<iecoop/trace/watch.hpp>), as CODESYS samples a trace in the task the trace names.
+// (<iecoop/trace/watch.hpp>), as CODESYS samples a trace in the task the trace names; and,
+// optionally, also right before they run: the test kit's forced values (<iecoop/testing.hpp>),
+// which CODESYS writes at the start and the end of each cycle.
 //
 //     plc.task("Fast").attach(recorder.observer());   // what trace_recorder::attach does
 //
@@ -25,16 +27,19 @@ class cycle_observer_list;
 }
 
 /**
- * A callback a task makes once per cycle, after the cycle's programs ran and before its
- * outputs are published: `notify(self, cycle_start, cycle)` with the cycle clock's time (the
- * cycle's start) and the cycle's number (0 for the first since the tasks were last
- * restarted). Not copyable or movable: the task holds its address.
+ * A callback a task makes once per cycle, after the cycle's programs ran and before the
+ * outputs they changed are staged for the cycle's end: `notify(self, cycle_start, cycle)` with
+ * the cycle clock's time (the cycle's start) and the cycle's number (0 for the first since the
+ * tasks were last restarted); and, if given, `before(self, cycle_start, cycle)` after the
+ * inputs were latched and before the programs run. Not copyable or movable: the task holds its
+ * address.
  */
 class cycle_observer {
  public:
   using function = void (*)(cycle_observer& self, LTIME cycle_start, std::uint64_t cycle);
 
-  explicit constexpr cycle_observer(function notify) noexcept : notify_(notify) {}
+  explicit constexpr cycle_observer(function notify, function before = nullptr) noexcept
+      : notify_(notify), before_(before) {}
   cycle_observer(const cycle_observer&) = delete;
   cycle_observer& operator=(const cycle_observer&) = delete;
   ~cycle_observer() { detach(); }
@@ -55,6 +60,7 @@ class cycle_observer {
   friend class detail::cycle_observer_list;
 
   function notify_;
+  function before_;
   cycle_observer* next_ = nullptr;
   cycle_observer** link_ = nullptr;  // the pointer that points at this observer
 };
@@ -80,10 +86,20 @@ class cycle_observer_list {
     observer.link_ = link;
   }
 
+  /// After the programs: every observer's notify.
   void notify(LTIME cycle_start, std::uint64_t cycle) const {
     for (cycle_observer* o = head_; o != nullptr;) {
       cycle_observer* const next = o->next_;  // an observer may detach itself
       o->notify_(*o, cycle_start, cycle);
+      o = next;
+    }
+  }
+
+  /// Before the programs: the observers that have a `before`.
+  void notify_before(LTIME cycle_start, std::uint64_t cycle) const {
+    for (cycle_observer* o = head_; o != nullptr;) {
+      cycle_observer* const next = o->next_;
+      if (o->before_ != nullptr) o->before_(*o, cycle_start, cycle);
       o = next;
     }
   }

@@ -109,11 +109,14 @@ class task_state {
 
 /// What a scheduler drives: the work of a task cycle, at its start and at its end. `task` is
 /// the task's index in the configuration, `now` the scheduler's time.
+/// begin_cycle may take the task's observers and the cycle's number too, and call the
+/// observers itself (before and after the programs: the application's task cycles do).
 template <class C>
-concept TaskCycles = requires(C& cycles, std::size_t task, LTIME now) {
-  cycles.begin_cycle(task, now);
-  cycles.end_cycle(task, now);
-};
+concept TaskCycles =
+    requires(C& cycles, std::size_t task, LTIME now) { cycles.end_cycle(task, now); } &&
+    (requires(C& cycles, std::size_t task, LTIME now) { cycles.begin_cycle(task, now); } ||
+     requires(C& cycles, std::size_t task, LTIME now, const detail::cycle_observer_list& observers,
+              std::uint64_t cycle) { cycles.begin_cycle(task, now, observers, cycle); });
 
 /// Whether a scheduler's tasks run.
 enum class scheduler_state : std::uint8_t {
@@ -275,8 +278,13 @@ class scheduler {
     t.start_time_ = now_;
     t.remaining_ = t.cost_of(t.cycle_number_);
     ++t.cycle_number_;
-    cycles_.begin_cycle(index, now_);
-    t.observers_.notify(now_, t.cycle_number_ - 1);
+    const detail::fault_context_scope in_task({t.settings_.name, nullptr});
+    if constexpr (requires { cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_); }) {
+      cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_ - 1);  // calls the observers itself
+    } else {
+      cycles_.begin_cycle(index, now_);
+      t.observers_.notify(now_, t.cycle_number_ - 1);
+    }
   }
 
   /// Ends, at now(), the cycle of task `index` under way: the cycles' end_cycle() does its
@@ -398,6 +406,7 @@ class scheduler {
       state_ = scheduler_state::exception;
       faulted_task_ = &t;
       clear_schedules();
+      const detail::fault_context_scope in_task({t.settings_.name, nullptr});
       fault(fault_kind::watchdog,
             "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
     }

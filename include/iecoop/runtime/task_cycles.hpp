@@ -18,7 +18,10 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/meta.hpp>
+#include <iecoop/detail/type_hash.hpp>
+#include <iecoop/fault.hpp>
 #include <iecoop/io/driver.hpp>
+#include <iecoop/runtime/cycle_observer.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
 #include <iecoop/types/time.hpp>
@@ -31,7 +34,11 @@ template <class Store, class Task>
 struct task_programs;
 template <class Store, class... P>
 struct task_programs<Store, task<P...>> {
-  static void run(Store& store) { (store.template get<P>()(), ...); }
+  // Each program is called with its name in the fault context (a fault names the program).
+  static void run(Store& store) {
+    ((current_fault_context.pou = short_type_name_c<P>.data(), store.template get<P>()()), ...);
+    current_fault_context.pou = nullptr;
+  }
 };
 
 /// The cycles of the tasks `Tasks...` (a type_list of task<...>), whose programs live in a
@@ -49,17 +56,22 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
   task_cycles& operator=(const task_cycles&) = delete;
 
   /// A cycle of task `index` starts: inputs latched, the cycle clock set, the programs
-  /// called, the outputs they changed staged for the cycle's end.
-  void begin_cycle(std::size_t index, LTIME now) {
+  /// called, the outputs they changed staged for the cycle's end. The task's `observers` are
+  /// called right before the programs (notify_before) and right after them (notify).
+  void begin_cycle(std::size_t index, LTIME now, const cycle_observer_list& observers, std::uint64_t cycle) {
     io_.read_inputs(Image::inputs());
     cycle_clock::set(now);
     if constexpr (output_bytes == 0) {
+      observers.notify_before(now, cycle);
       programs_of[index](store_);
+      observers.notify(now, cycle);
     } else {
       const auto outputs = Image::outputs();
       std::array<std::byte, output_bytes> before;
       std::memcpy(before.data(), outputs.data(), output_bytes);
+      observers.notify_before(now, cycle);
       programs_of[index](store_);
+      observers.notify(now, cycle);
       staged_outputs& staged = staged_[index];
       for (std::size_t b = 0; b < output_bytes; ++b) {
         staged.value[b] = outputs[b];

@@ -201,14 +201,6 @@ constexpr std::string_view enum_value_name() noexcept {
   return is_identifier(last) ? last : std::string_view{};
 }
 
-/// The name of the type E without its namespaces and enclosing classes (`E_State`).
-template <class E>
-constexpr std::string_view short_type_name() noexcept {
-  constexpr std::string_view name = type_name<E>();
-  const std::size_t colons = name.rfind("::");
-  return colons == std::string_view::npos ? name : name.substr(colons + 2);
-}
-
 template <auto V, std::size_t... I>
 auto spell_enum_value(std::index_sequence<I...>) -> spelled<enum_value_name<V>()[I]...>;
 /// The name of the enumerator V as a spelled<> type, for diagnostics.

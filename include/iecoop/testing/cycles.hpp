@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// iecoop/testing/cycles.hpp — testing one block or program without an application: the
+// driver sets the cycle clock, calls it once per cycle, and moves the clock on.
+//
+//     TON tmr;
+//     testing::cycles run{tmr, "T#10ms"_iec};   // tmr() every 10 ms of simulated time
+//     tmr.IN = TRUE;  tmr.PT = "T#50ms"_iec;
+//     run.step();                                // cycle 0 at T#0ms
+//     run.advance("T#50ms"_iec);                 // cycles 1..5
+//     CHECK(tmr.Q);
+//
+//     testing::cycles call{[&] { fb("xIn"_ = x, "iLimit"_ = 5); }, "T#1ms"_iec};   // a call with arguments
+//
+// Each cycle: the cycle clock is set to now(), forced values are written, the body runs,
+// forced values are written again, now() moves on by the cycle time.
+// IWYU pragma: private, include <iecoop/testing.hpp>
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <type_traits>
+
+#include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/testing/driver.hpp>
+#include <iecoop/types/literals.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop::testing {
+
+/// Cycles of `Body`: a block or program (held by reference, called as `body()`) or any
+/// callable (held by value).
+template <class Body>
+class cycles : public driver<cycles<Body>> {
+  static_assert(std::invocable<Body&>,
+                "iecoop: testing::cycles calls a block, a program or a callable without arguments each cycle; give "
+                "the block (its inputs set before step()) or a lambda that calls it with its inputs");
+
+ public:
+  /// Runs `body` once per `cycle_time`, the first cycle at `start` (the cycle clock's time).
+  template <class B>
+  explicit cycles(B&& body, LTIME cycle_time = LTIME(TIME(10)), LTIME start = LTIME{})
+      : body_(std::forward<B>(body)), cycle_time_(cycle_time), now_(start) {}
+
+  /// The time of the next cycle.
+  [[nodiscard]] LTIME now() const noexcept { return now_; }
+  /// The number of cycles run.
+  [[nodiscard]] std::uint64_t cycle() const noexcept { return cycle_; }
+  [[nodiscard]] LTIME cycle_time() const noexcept { return cycle_time_; }
+  [[nodiscard]] LTIME step_time() const noexcept { return cycle_time_; }
+  /// Changes the cycle time from the next cycle on.
+  void set_cycle_time(LTIME cycle_time) noexcept { cycle_time_ = cycle_time; }
+  /// Sets the time of the next cycle (a replay table's time_ms); time may also jump back.
+  void set_now(LTIME now) noexcept { now_ = now; }
+
+  /// n cycles (the drivers' step() and friends call this).
+  void run_cycles(std::uint64_t n) {
+    for (std::uint64_t i = 0; i < n; ++i) {
+      cycle_clock::set(now_);
+      this->forces_.apply_at_start();
+      body_();
+      this->forces_.apply_at_end();
+      now_ = now_ + cycle_time_;
+      ++cycle_;
+      this->stepped();
+    }
+  }
+
+ private:
+  Body body_;
+  LTIME cycle_time_;
+  LTIME now_;
+  std::uint64_t cycle_ = 0;
+};
+
+template <class B>
+cycles(B&&) -> cycles<B>;
+template <class B>
+cycles(B&&, LTIME) -> cycles<B>;
+template <class B>
+cycles(B&&, LTIME, LTIME) -> cycles<B>;
+
+}  // namespace iecoop::testing
+
+#include <iecoop/detail/pop_macros.hpp>
