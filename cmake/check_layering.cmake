@@ -10,6 +10,7 @@
 #   trace/                           7  (recorder, writers, watch list: they observe the runtime)
 #   iecoop.hpp, trace.hpp, fmt.hpp,  8  (the umbrella and the integrations)
 #   ostream.hpp
+#   testing/, testing.hpp            9  (the test kit: on doctest, over everything above)
 # A detail/ header is shared machinery: it takes the layer of the highest header it includes
 # (at least 1), and may build on types/ but on nothing above.
 cmake_minimum_required(VERSION 3.25)
@@ -24,6 +25,7 @@ set(rank_standard 4)
 set(rank_io 5)
 set(rank_runtime 6)
 set(rank_trace 7)
+set(rank_testing 9)
 set(detail_ceiling 2)
 
 file(GLOB_RECURSE headers RELATIVE ${INCLUDE_DIR} ${INCLUDE_DIR}/iecoop/*.hpp)
@@ -45,6 +47,8 @@ function(folder_rank header out)
     set(${out} ${rank_${CMAKE_MATCH_1}} PARENT_SCOPE)
   elseif(header MATCHES "^iecoop/(config|fault)\\.hpp$")
     set(${out} 1 PARENT_SCOPE)
+  elseif(header STREQUAL "iecoop/testing.hpp")
+    set(${out} 9 PARENT_SCOPE)
   else()
     set(${out} 8 PARENT_SCOPE)
   endif()

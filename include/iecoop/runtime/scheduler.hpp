@@ -112,11 +112,11 @@ class task_state {
 /// begin_cycle may take the task's observers and the cycle's number too, and call the
 /// observers itself (before and after the programs: the application's task cycles do).
 template <class C>
-concept TaskCycles =
-    requires(C& cycles, std::size_t task, LTIME now) { cycles.end_cycle(task, now); } &&
-    (requires(C& cycles, std::size_t task, LTIME now) { cycles.begin_cycle(task, now); } ||
-     requires(C& cycles, std::size_t task, LTIME now, const detail::cycle_observer_list& observers,
-              std::uint64_t cycle) { cycles.begin_cycle(task, now, observers, cycle); });
+concept TaskCycles = requires(C& cycles, std::size_t task, LTIME now) { cycles.end_cycle(task, now); } &&
+                     (
+                         requires(C& cycles, std::size_t task, LTIME now) { cycles.begin_cycle(task, now); } ||
+                         requires(C& cycles, std::size_t task, LTIME now, const detail::cycle_observer_list& observers,
+                                  std::uint64_t cycle) { cycles.begin_cycle(task, now, observers, cycle); });
 
 /// Whether a scheduler's tasks run.
 enum class scheduler_state : std::uint8_t {

@@ -84,7 +84,8 @@ std::optional<T> parse_token(std::string_view token) {
     const auto r = parse_time_point<T>(token);
     return r ? std::optional<T>(r.value_or(T{})) : std::nullopt;
   } else {
-    static_assert(sizeof(T) == 0, "iecoop: a timing diagram's lane is BOOL, an integer, a bit string, REAL, TIME or a date");
+    static_assert(sizeof(T) == 0,
+                  "iecoop: a timing diagram's lane is BOOL, an integer, a bit string, REAL, TIME or a date");
     return std::nullopt;
   }
 }
@@ -212,11 +213,13 @@ inline std::string layout(const std::vector<lane>& lanes, const std::vector<std:
     }
     width[i] = w;
   }
+  // The names' column, with a space after the longest name; then "expect " or "actual ".
   std::size_t name_width = 5;
   for (const lane& l : lanes) name_width = std::max(name_width, l.name.size());
+  ++name_width;
   const std::string sep = pictures ? "" : " ";
   const auto row = [&](std::string label, const auto& text_of_cycle) {
-    label.resize(name_width + 8, ' ');
+    label.resize(name_width + 7, ' ');
     std::string line = label;
     for (std::size_t i = 0; i < cycles; ++i) {
       std::string t = text_of_cycle(i);
@@ -236,13 +239,13 @@ inline std::string layout(const std::vector<lane>& lanes, const std::vector<std:
       continue;
     }
     std::string name = l.name;
-    name.resize(name_width + 1, ' ');
+    name.resize(name_width, ' ');
     out += row(name + "expect", [&](std::size_t i) { return shown(l, cell(l, i)); });
-    out += row(std::string(name_width + 1, ' ') + "actual",
+    out += row(std::string(name_width, ' ') + "actual",
                [&](std::size_t i) { return i < actual[k].size() ? shown(l, actual[k][i]) : std::string(); });
   }
   if (first_difference < cycles) {
-    std::size_t column = name_width + 8;
+    std::size_t column = name_width + 7;
     for (std::size_t i = 0; i < first_difference; ++i) column += width[i] + sep.size();
     out += std::string(column, ' ') + "^\n";
   }
@@ -291,7 +294,8 @@ template <class Driver, class... Lanes>
   std::size_t cycles = 0;
   for (const lane& l : lanes) cycles = std::max(cycles, l.cells.size());
   auto recorder = detail::record_lanes(lanes, error);
-  run.on_step([](void* r) { static_cast<detail::diagram_recorder*>(r)->sample(cycle_clock::now(), 0); }, recorder.get());
+  run.on_step([](void* r) { static_cast<detail::diagram_recorder*>(r)->sample(cycle_clock::now(), 0); },
+              recorder.get());
   for (std::size_t i = 0; i < cycles && error.empty(); ++i) {
     for (lane& l : lanes) {
       if (l.driven && i < l.cells.size() && l.cells[i] != "." && !l.write(l.variable, l.cells[i])) {
@@ -326,7 +330,8 @@ template <class Driver, class... Lanes>
   } else if (view.size() != cycles) {
     heading += std::to_string(view.size()) + " of " + std::to_string(cycles) + " cycles ran (a fault stopped them?)";
   } else if (first < cycles) {
-    heading += differing + " differs from cycle " + std::to_string(first) + " (" + detail::text_of(TIME(view.time(first))) + ")";
+    heading += differing + " differs from cycle " + std::to_string(first) + " (" +
+               detail::text_of(TIME(view.time(first))) + ")";
   } else {
     heading += "as expected";
   }

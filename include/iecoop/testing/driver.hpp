@@ -20,7 +20,6 @@
 #include <concepts>
 #include <cstdint>
 #include <ostream>
-#include <source_location>
 #include <type_traits>
 
 #include <iecoop/ostream.hpp>
@@ -40,18 +39,18 @@ struct wait_result {
   bool met = false;
   bool stopped_by_fault = false;  ///< the test case had a fault: the driver ran no more cycles
   LTIME timeout{};
-  LTIME waited{};              ///< simulated time spent waiting
-  std::uint64_t cycles = 0;    ///< cycles run while waiting
-  std::uint64_t cycle = 0;     ///< the driver's cycle count at the end
-  LTIME now{};                 ///< the driver's time at the end
+  LTIME waited{};            ///< simulated time spent waiting
+  std::uint64_t cycles = 0;  ///< cycles run while waiting
+  std::uint64_t cycle = 0;   ///< the driver's cycle count at the end
+  LTIME now{};               ///< the driver's time at the end
 
   explicit operator bool() const noexcept { return met; }
 
   friend std::ostream& operator<<(std::ostream& os, const wait_result& r) {
     if (r.met) return os << "met after " << TIME(r.waited) << " (" << r.cycles << " cycles)";
     os << (r.stopped_by_fault ? "not met: a fault stopped the cycles after " : "not met within ")
-       << (r.stopped_by_fault ? TIME(r.waited) : TIME(r.timeout)) << ": " << r.cycles << " cycles run, cycle " << r.cycle
-       << ", time " << TIME(r.now);
+       << (r.stopped_by_fault ? TIME(r.waited) : TIME(r.timeout)) << ": " << r.cycles << " cycles run, cycle "
+       << r.cycle << ", time " << TIME(r.now);
     return os;
   }
 };
@@ -64,7 +63,11 @@ bool holds(C& condition) {
   if constexpr (std::invocable<C&>) {
     return static_cast<bool>(condition());
   } else {
-    return static_cast<bool>(BOOL(condition));
+    static_assert(std::is_constructible_v<BOOL, C&>,
+                  "iecoop: run_until waits for a condition: a BOOL variable or a callable that returns BOOL or bool; "
+                  "write a comparison as a lambda, e.g. run_until([&] { return fb.iCount == 3; }, T)");
+    if constexpr (std::is_constructible_v<BOOL, C&>) return static_cast<bool>(BOOL(condition));
+    return false;
   }
 }
 }  // namespace detail
@@ -77,13 +80,13 @@ template <class Derived>
 class driver {
  public:
   /// Runs `n` cycles (an application: `n` base cycles, each task as often as it is due).
-  void step(std::uint64_t n = 1, std::source_location where = std::source_location::current()) {
+  void step(std::uint64_t n = 1, call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
     run(n);
   }
 
   /// Runs the cycles due in the next `duration` of simulated time (rounded up to whole steps).
-  void advance(LTIME duration, std::source_location where = std::source_location::current()) {
+  void advance(LTIME duration, call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
     run(steps_in(duration));
   }
@@ -91,8 +94,7 @@ class driver {
   /// Runs cycles until `condition` holds (checked before the first and after each cycle), for
   /// at most `timeout` of simulated time. Use it in REQUIRE or CHECK: [[nodiscard]].
   template <class C>
-  [[nodiscard]] wait_result run_until(C&& condition, LTIME timeout,
-                                      std::source_location where = std::source_location::current()) {
+  [[nodiscard]] wait_result run_until(C&& condition, LTIME timeout, call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
     wait_result r;
     r.timeout = timeout;
@@ -118,8 +120,7 @@ class driver {
   /// Sets the BOOL `input` to `value` (TRUE) for `cycles` cycles (forced: the field and the
   /// program cannot change it meanwhile), then gives it back the value it had before.
   template <class V>
-  void pulse(V& input, std::uint64_t cycles = 1, BOOL value = TRUE,
-             std::source_location where = std::source_location::current()) {
+  void pulse(V& input, std::uint64_t cycles = 1, BOOL value = TRUE, call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
     const bool was_forced = forces_.forced(input);
     const BOOL before = static_cast<BOOL>(input);

@@ -74,10 +74,11 @@ class plc_driver : public driver<plc_driver<App>> {
   // One per task: forced values before and after the task's programs.
   struct force_hook : cycle_observer {
     force_hook()
-        : cycle_observer([](cycle_observer& self, LTIME, std::uint64_t) { static_cast<force_hook&>(self).forces->apply_at_end(); },
-                         [](cycle_observer& self, LTIME, std::uint64_t) {
-                           static_cast<force_hook&>(self).forces->apply_at_start();
-                         }) {}
+        : cycle_observer(
+              [](cycle_observer& self, LTIME, std::uint64_t) { static_cast<force_hook&>(self).forces->apply_at_end(); },
+              [](cycle_observer& self, LTIME, std::uint64_t) {
+                static_cast<force_hook&>(self).forces->apply_at_start();
+              }) {}
     force_table* forces = nullptr;
   };
 

@@ -1,0 +1,420 @@
+// The test kit's own tests (<iecoop/testing.hpp>, docs/testing.md), written with the kit and
+// registered with iecoop_discover_tests, as a user's test program is.
+#define IECOOP_TESTING_MAIN
+#include <iecoop/testing.hpp>
+
+#include <sstream>
+#include <string>
+
+using namespace iecoop;
+namespace testing = iecoop::testing;
+
+namespace {
+
+// FUNCTION_BLOCK FB_Div: q := a / b (a fault when b = 0); count := count + 1.
+struct FB_Div : function_block<FB_Div> {
+  INT a;
+  INT b = 1;
+  INT q;
+  var<INT> count;
+  using VAR_INPUT = pins<&FB_Div::a, &FB_Div::b>;
+  using VAR_OUTPUT = pins<&FB_Div::q>;
+  void body() {
+    q = a / b;
+    count += 1;
+  }
+};
+
+// A small application: one program in a 10 ms task, one in a 30 ms task, located I/O.
+struct GVL_IO : global_variables<GVL_IO> {
+  [[no_unique_address]] located<BOOL, "%IX0.0"> ixButton;
+  [[no_unique_address]] located<BOOL, "%QX0.0"> qxLamp;
+  [[no_unique_address]] located<WORD, "%QW1"> qwCount;
+  using LOCATED = pins<&GVL_IO::ixButton, &GVL_IO::qxLamp, &GVL_IO::qwCount>;
+};
+struct GVL : global_variables<GVL> {
+  INT iDivisor = 1;
+  INT iResult;
+  WORD wPresses;
+};
+struct PLC_PRG : program<PLC_PRG> {
+  R_TRIG rtButton;
+  TON tLamp;
+  void body() {
+    GVL_IO& io = GVL_IO::instance();
+    GVL& gvl = GVL::instance();
+    rtButton("CLK"_ = io.ixButton);
+    if (rtButton.Q) gvl.wPresses += 1U;
+    tLamp("IN"_ = io.ixButton, "PT"_ = "T#50ms"_iec);
+    io.qxLamp = tLamp.Q;
+    io.qwCount = gvl.wPresses;
+  }
+};
+struct SLOW_PRG : program<SLOW_PRG> {
+  void body() {
+    GVL& gvl = GVL::instance();
+    gvl.iResult = INT(100) / gvl.iDivisor;
+  }
+};
+auto make_plc() {
+  return application{task<PLC_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0}, task<SLOW_PRG>{"Slow", cyclic{"T#30ms"_iec}, 5},
+                     globals<GVL_IO, GVL>{}};
+}
+
+struct PlcTest : testing::plc<make_plc> {
+  GVL_IO& io = get<GVL_IO>();
+  GVL& gvl = get<GVL>();
+};
+
+template <class T>
+std::string printed(const T& value) {
+  return doctest::StringMaker<T>::convert(value).c_str();
+}
+
+}  // namespace
+
+TEST_SUITE("cycles") {
+  TEST_CASE("step sets the cycle clock and moves it by the cycle time") {
+    TON tmr;
+    testing::cycles run{tmr, "T#10ms"_iec};
+    tmr.IN = TRUE;
+    tmr.PT = "T#25ms"_iec;
+    run.step();
+    CHECK(run.now() == LTIME(TIME(10)));
+    CHECK(run.cycle() == 1U);
+    CHECK(cycle_clock::now() == LTIME{});  // the cycle ran at T#0ms
+    run.step(2);
+    CHECK(tmr.ET == "T#20ms"_iec);
+    CHECK_FALSE(tmr.Q);
+    run.advance("T#10ms"_iec);
+    CHECK(tmr.Q);
+    CHECK(run.cycle() == 4U);
+  }
+
+  TEST_CASE("advance rounds up to whole cycles") {
+    FB_Div fb;
+    testing::cycles run{fb, "T#10ms"_iec};
+    run.advance("T#25ms"_iec);
+    CHECK(fb.count == 3);
+    run.advance(LTIME{});
+    CHECK(fb.count == 3);
+  }
+
+  TEST_CASE("a lambda is called as it is, with its arguments") {
+    TP pulse;
+    BOOL trigger;
+    testing::cycles run{[&] { pulse("IN"_ = trigger, "PT"_ = "T#30ms"_iec); }, "T#10ms"_iec, LTIME(TIME(1000))};
+    trigger = TRUE;
+    run.step();
+    CHECK(pulse.Q);
+    CHECK(cycle_clock::now() == LTIME(TIME(1000)));
+    run.step(3);
+    CHECK_FALSE(pulse.Q);
+  }
+
+  TEST_CASE("run_until reports when the condition was met") {
+    TON tmr;
+    tmr.PT = "T#50ms"_iec;
+    tmr.IN = TRUE;
+    testing::cycles run{tmr, "T#10ms"_iec};
+    const testing::wait_result r = run.run_until(tmr.Q, "T#1s"_iec);
+    REQUIRE(r);
+    CHECK(r.cycles == 6U);  // cycles at 0, 10, ..., 50 ms
+    CHECK(r.waited == LTIME(TIME(60)));
+    std::ostringstream text;
+    text << r;
+    CHECK(text.str() == "met after T#60ms (6 cycles)");
+  }
+
+  TEST_CASE("run_until stops at the timeout and says where it stopped") {
+    TON tmr;
+    tmr.PT = "T#1s"_iec;
+    tmr.IN = TRUE;
+    testing::cycles run{tmr, "T#10ms"_iec};
+    const testing::wait_result r = run.run_until([&] { return tmr.Q; }, "T#100ms"_iec);
+    CHECK_FALSE(r);
+    CHECK(r.cycles == 10U);
+    std::ostringstream text;
+    text << r;
+    CHECK(text.str() == "not met within T#100ms: 10 cycles run, cycle 10, time T#100ms");
+  }
+
+  TEST_CASE("a condition met already runs no cycle") {
+    FB_Div fb;
+    testing::cycles run{fb};
+    BOOL yes = TRUE;
+    CHECK(run.run_until(yes, "T#1s"_iec).cycles == 0U);
+    CHECK(fb.count == 0);
+  }
+
+  TEST_CASE("pulse sets a BOOL for n cycles, then gives back its value") {
+    R_TRIG edge;
+    BOOL clk;
+    int rising = 0;
+    int high = 0;
+    testing::cycles run{[&] {
+      edge("CLK"_ = clk);
+      rising += edge.Q ? 1 : 0;
+      high += clk ? 1 : 0;
+    }};
+    run.pulse(clk, 3);
+    CHECK(high == 3);
+    CHECK(rising == 1);
+    CHECK_FALSE(clk);
+    run.step();
+    CHECK(high == 3);
+  }
+}
+
+TEST_SUITE("forcing") {
+  TEST_CASE("a forced variable wins over the block until released") {
+    FB_Div fb;
+    testing::cycles run{fb};
+    run.force(fb.count, INT(7));  // VAR: the block adds 1 each cycle
+    run.force(fb.q, INT(3));      // VAR_OUTPUT
+    run.step(2);
+    CHECK(fb.count == 7);
+    CHECK(fb.q == 3);
+    CHECK(run.forced(fb.count));
+    CHECK(run.forced_count() == 2U);
+    run.release(fb.count);
+    CHECK_FALSE(run.forced(fb.count));
+    run.step();
+    CHECK(fb.count == 8);  // released: the block counts on from the forced value
+    run.release_all();
+    CHECK(run.forced_count() == 0U);
+  }
+
+  TEST_CASE("forcing again replaces the forced value") {
+    FB_Div fb;
+    testing::cycles run{fb};
+    run.force(fb.a, INT(4));
+    run.force(fb.a, INT(6));
+    run.step();
+    CHECK(fb.q == 6);
+    CHECK(run.forced_count() == 1U);
+  }
+
+  TEST_CASE("a written value is written once") {
+    FB_Div fb;
+    testing::cycles run{fb};
+    run.write(fb.count, INT(100));
+    CHECK_FALSE(run.forced(fb.count));
+    run.step(2);
+    CHECK(fb.count == 102);
+  }
+
+  TEST_CASE_FIXTURE(PlcTest, "forcing a located input, output and global variable") {
+    force(io.ixButton, TRUE);
+    CHECK(forced(io.ixButton));
+    advance("T#100ms"_iec);
+    CHECK(io.qxLamp);
+    CHECK(gvl.wPresses == 1U);
+    force(io.qxLamp, FALSE);  // the program writes TRUE; the field sees FALSE
+    step();
+    CHECK_FALSE(io.qxLamp);
+    CHECK((app().published_outputs()[0] & std::byte{1}) == std::byte{0});
+    release(io.qxLamp);
+    step();
+    CHECK(io.qxLamp);
+    force(gvl.wPresses, WORD(40));
+    step();
+    CHECK(io.qwCount == 40U);
+  }
+
+  TEST_CASE_FIXTURE(PlcTest, "an address without a variable") {
+    force(testing::at<BOOL, "%IX0.0">(), TRUE);
+    step(2);
+    CHECK(gvl.wPresses == 1U);
+    CHECK(forced(testing::at<BOOL, "%IX0.0">()));
+    CHECK_FALSE(forced(io.ixButton));  // another variable at the same address is another entry
+  }
+}
+
+TEST_SUITE("plc") {
+  TEST_CASE_FIXTURE(PlcTest, "step runs one base cycle, every task as it is due") {
+    CHECK(step_time() == LTIME(TIME(10)));
+    step(3);
+    CHECK(now() == LTIME(TIME(30)));
+    CHECK(task("Fast").statistics().cycles == 3U);
+    CHECK(task("Slow").statistics().cycles == 1U);
+    CHECK(gvl.iResult == 100);
+  }
+
+  TEST_CASE_FIXTURE(PlcTest, "pulse and run_until over an application") {
+    pulse(io.ixButton, 2);
+    CHECK(gvl.wPresses == 1U);
+    pulse(io.ixButton);  // no cycle saw FALSE between the two pulses: no second edge
+    CHECK(gvl.wPresses == 1U);
+    step();
+    pulse(io.ixButton);
+    CHECK(gvl.wPresses == 2U);
+    step();
+    force(io.ixButton, TRUE);
+    const testing::wait_result r = run_until(io.qxLamp, "T#1s"_iec);
+    REQUIRE(r);
+    CHECK(r.cycles == 6U);
+  }
+
+  TEST_CASE("a fixture's application starts with it and stops after it") {
+    {
+      testing::plc<make_plc> plc;
+      CHECK(plc.app().state() == application_state::running);
+      plc.step();
+    }
+    testing::plc<make_plc> stopped{false};
+    CHECK(stopped.app().state() == application_state::stopped);
+  }
+}
+
+TEST_SUITE("faults") {
+  TEST_CASE("CHECK_FAULT expects a fault of one kind") {
+    FB_Div fb;
+    fb.b = 0;
+    testing::cycles run{fb};
+    CHECK_FAULT(run.step(), fault_kind::division_by_zero);
+    CHECK(fb.q == 0);  // the fault's documented result
+    fb.b = 1;
+    run.step();
+  }
+
+  TEST_CASE("expect_faults records kind, message, task, program and time") {
+    testing::plc<make_plc> plc;
+    plc.get<GVL>().iDivisor = 0;
+    testing::expect_faults faults;
+    plc.step(6);
+    REQUIRE(faults.count() == 2U);  // Slow runs at 0 and 30 ms
+    CHECK(faults.only(fault_kind::division_by_zero));
+    CHECK(std::string(faults[1].task) == "Slow");
+    CHECK(std::string(faults[1].pou) == "SLOW_PRG");
+    CHECK(faults[1].time == LTIME(TIME(30)));
+    CHECK(testing::describe(faults[1]) ==
+          "division by zero: integer division or MOD by zero; the result is 0 (task Slow, program SLOW_PRG, "
+          "cycle clock T#30ms)");
+  }
+
+  TEST_CASE("a fault outside a task has no task") {
+    testing::expect_faults faults;
+    INT zero;
+    const INT r = INT(1) / zero;
+    CHECK(r == 0);
+    REQUIRE(faults.count() == 1U);
+    CHECK(faults.last().task == nullptr);
+  }
+
+  TEST_CASE("an unexpected fault fails the test case" * doctest::should_fail()) {
+    FB_Div fb;
+    fb.b = 0;
+    testing::cycles run{fb};
+    run.step(100);
+  }
+
+  TEST_CASE("after an unexpected fault the drivers run no more cycles" * doctest::should_fail()) {
+    FB_Div fb;
+    fb.b = 0;
+    testing::cycles run{fb};
+    run.step(100);
+    CHECK(testing::faulted());
+    CHECK(run.cycle() == 1U);
+    CHECK(fb.count == 1);
+    CHECK_FALSE(run.run_until([&] { return fb.q == 1; }, "T#1s"_iec).met);
+    CHECK(run.cycle() == 1U);
+  }
+
+  TEST_CASE("the next case starts without the fault") {
+    CHECK_FALSE(testing::faulted());
+    FB_Div fb;
+    testing::cycles run{fb};
+    run.step(3);
+    CHECK(run.cycle() == 3U);
+  }
+
+  TEST_CASE("a watchdog fault names its task" * doctest::should_fail()) {
+    auto make = [] {
+      return application{task<PLC_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0, watchdog{"T#5ms"_iec, 1}},
+                         globals<GVL_IO, GVL>{}};
+    };
+    testing::plc<make> plc;
+    plc.task("Fast").model_execution_time("T#8ms"_iec);
+    plc.step(3);
+  }
+}
+
+TEST_SUITE("values") {
+  TEST_CASE("IEC values print as ST writes them") {
+    CHECK(printed(TRUE) == "TRUE");
+    CHECK(printed(TIME("T#1s500ms"_iec)) == "T#1s500ms");
+    CHECK(printed(WORD(255)) == "16#00FF");
+    CHECK(printed(BYTE(10)) == "16#0A");
+    CHECK(printed(DWORD(0xDEADBEEFU)) == "16#DEADBEEF");
+    CHECK(printed(INT(-5)) == "-5");
+    CHECK(printed(STRING<10>("abc")) == "'abc'");
+    CHECK(printed(STRING<10>("it's $5")) == "'it$'s $$5'");
+    CHECK(printed(WSTRING<10>(u"\u00e9t\u00e9")) == "\"\u00e9t\u00e9\"");
+    CHECK(printed(REAL(1.5f)) == "1.5");
+    FB_Div fb;
+    fb.count = 4;
+    CHECK(printed(fb.count) == "4");
+    GVL_IO io;
+    CHECK(printed(io.qwCount) == "16#0000");
+  }
+}
+
+TEST_SUITE("diagram") {
+  TEST_CASE("a TON as a timing diagram") {
+    TON tmr;
+    tmr.PT = "T#20ms"_iec;
+    testing::cycles run{tmr, "T#10ms"_iec};
+    CHECK(testing::run_diagram(run, testing::drive("IN", tmr.IN, "__####____"),
+                               testing::expect("Q", tmr.Q, "____##____"),
+                               testing::expect("ET", tmr.ET, "0 0 0 10 20 20 0 0 0 0")));
+  }
+
+  TEST_CASE("a differing diagram shows both lanes and marks the first difference") {
+    TON tmr;
+    tmr.PT = "T#20ms"_iec;
+    testing::cycles run{tmr, "T#10ms"_iec};
+    const testing::diagram_result d = testing::run_diagram(run, testing::drive("IN", tmr.IN, "__####____"),
+                                                           testing::expect("Q", tmr.Q, "____###..."));
+    CHECK_FALSE(d);
+    CHECK(d.report ==
+          "timing diagram: Q differs from cycle 6 (T#60ms)\n"
+          "cycle        0123456789\n"
+          "IN           __####____\n"
+          "Q     expect ____###...\n"
+          "      actual ____##____\n"
+          "                   ^\n");
+  }
+
+  TEST_CASE("value tables line up") {
+    CTU counter;
+    testing::cycles run{counter};
+    const testing::diagram_result d = testing::run_diagram(run, testing::drive("CU", counter.CU, "_#_#_#"),
+                                                           testing::drive("PV", counter.PV, "3 . . . . ."),
+                                                           testing::expect("CV", counter.CV, "0 1 1 2 2 2"));
+    CHECK_FALSE(d);
+    CHECK(d.report ==
+          "timing diagram: CV differs from cycle 5 (T#50ms)\n"
+          "cycle        0     1    2     3    4     5\n"
+          "CU           FALSE TRUE FALSE TRUE FALSE TRUE\n"
+          "PV           3     .    .     .    .     .\n"
+          "CV    expect 0     1    1     2    2     2\n"
+          "      actual 0     1    1     2    2     3\n"
+          "                                         ^\n");
+  }
+
+  TEST_CASE("a diagram over an application") {
+    testing::plc<make_plc> plc;
+    GVL_IO& io = plc.get<GVL_IO>();
+    CHECK(testing::run_diagram(plc, testing::drive("ixButton", io.ixButton, "_########_"),
+                               testing::expect("qxLamp", io.qxLamp, "______###_")));
+  }
+
+  TEST_CASE("a cell that is no value fails with a message") {
+    FB_Div fb;
+    testing::cycles run{fb};
+    const testing::diagram_result d = testing::run_diagram(run, testing::expect("q", fb.q, "0 x"));
+    CHECK_FALSE(d);
+    CHECK(d.report.starts_with("timing diagram: iecoop: 'x' in lane q is no value of its type\n"));
+  }
+}
