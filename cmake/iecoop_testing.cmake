@@ -8,8 +8,6 @@
 #
 # Like doctest_discover_tests, but with the suites in the names: CI servers group JUnit test
 # cases by the part of the name before the last dot.
-set(_IECOOP_TESTING_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/iecoop_testing_add_tests.cmake)
-
 function(iecoop_discover_tests target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "PROPERTIES;EXTRA_ARGS")
   set(ctest_file "${CMAKE_CURRENT_BINARY_DIR}/${target}_iecoop_tests.cmake")
@@ -21,7 +19,7 @@ function(iecoop_discover_tests target)
     BYPRODUCTS ${ctest_file}
     COMMAND ${CMAKE_COMMAND} -D TEST_EXECUTABLE=$<TARGET_FILE:${target}> -D CTEST_FILE=${ctest_file}
             -D TEST_PROPERTIES=${properties} -D TEST_EXTRA_ARGS=${extra_args}
-            -D TEST_WORKING_DIR=${CMAKE_CURRENT_BINARY_DIR} -P ${_IECOOP_TESTING_SCRIPT}
+            -D TEST_WORKING_DIR=${CMAKE_CURRENT_BINARY_DIR} -P ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/iecoop_testing_add_tests.cmake
     VERBATIM)
   file(WRITE ${include_file}
        "if(EXISTS \"${ctest_file}\")\n  include(\"${ctest_file}\")\nelse()\n"

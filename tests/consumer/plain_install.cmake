@@ -25,5 +25,6 @@ endif()
 step(${CMAKE_CTEST_COMMAND} --build-and-test ${SOURCE_DIR}/tests/consumer/find_package ${WORK_DIR}/consumer
      --build-generator ${GENERATOR}
      --build-options -DCMAKE_CXX_COMPILER=${COMPILER} -DCMAKE_PREFIX_PATH=${prefix} -DIECOOP_EXPECT_CHECK=OFF
+                   -DIECOOP_CONSUMER_KIT=OFF
      --test-command iecoop_consumer)
 message("plain_install: configured without doctest, fmt and Google Benchmark, installed, and found")
