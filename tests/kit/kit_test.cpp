@@ -418,3 +418,56 @@ TEST_SUITE("diagram") {
     CHECK(d.report.starts_with("timing diagram: iecoop: 'x' in lane q is no value of its type\n"));
   }
 }
+
+TEST_SUITE("table") {
+  // iecoop-replay's TON trace (tests/replay/ton.trace.csv), worked out by hand from IEC and
+  // CODESYS: the same table drives a TON through the kit.
+  TEST_CASE("a TON replays the replay tool's trace") {
+    TON tmr;
+    testing::cycles run{tmr};
+    const std::string csv = testing::read_file(IECOOP_SOURCE_DIR "/tests/replay/ton.trace.csv");
+    REQUIRE_FALSE(csv.empty());
+    const testing::diagram_result r =
+        testing::run_table(run, csv, testing::drive("IN", tmr.IN), testing::drive("PT", tmr.PT),
+                           testing::expect("Q", tmr.Q), testing::expect("ET", tmr.ET));
+    CHECK(r);
+    CHECK(r.report == "table: 8 rows as expected");
+  }
+
+  TEST_CASE("a differing row is named with its note") {
+    TON tmr;
+    testing::cycles run{tmr};
+    const testing::diagram_result r = testing::run_table(run,
+                                                         "cycle,time_ms,IN,PT_ms,Q,ET_ms,note\n"
+                                                         "0,0,1,100,0,0,start\n"
+                                                         "1,50,1,100,0,50,\n"
+                                                         "2,100,1,100,0,100,too late, says the table\n",
+                                                         testing::drive("IN", tmr.IN), testing::drive("PT", tmr.PT),
+                                                         testing::expect("Q", tmr.Q), testing::expect("ET", tmr.ET));
+    CHECK_FALSE(r);
+    CHECK(r.report ==
+          "table: line 4 (time_ms 100, 'too late, says the table') differs:\n"
+          "  Q: expected FALSE, actual TRUE\n"
+          "  2,100,1,100,0,100,too late, says the table");
+  }
+
+  TEST_CASE_FIXTURE(PlcTest, "a table over an application") {
+    const testing::diagram_result r =
+        testing::run_table(*this,
+                           "cycle,time_ms,ixButton,qxLamp\n"
+                           "0,0,1,0\n"
+                           "1,50,1,1\n"
+                           "2,60,0,0\n",
+                           testing::drive("ixButton", io.ixButton), testing::expect("qxLamp", io.qxLamp));
+    CHECK(r);
+    CHECK(gvl.wPresses == 1U);
+  }
+
+  TEST_CASE("a table without a column of a lane") {
+    TON tmr;
+    testing::cycles run{tmr};
+    const testing::diagram_result r = testing::run_table(run, "cycle,time_ms,IN\n0,0,1\n", testing::expect("Q", tmr.Q));
+    CHECK_FALSE(r);
+    CHECK(r.report == "table: no column Q");
+  }
+}

@@ -4,14 +4,15 @@
 #include <doctest/doctest.h>
 
 #include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>  // readable values in failed CHECKs
+#include <iecoop/testing.hpp>  // the test kit: readable values in failed CHECKs, faults fail the test case
 
 #include <string>
 #include <type_traits>
 
 namespace iecoop_test {
 
-/// Records faults instead of aborting, for as long as it lives.
+/// Records faults instead of failing the test case, for as long as it lives (the suite's
+/// older form of the kit's testing::expect_faults, with the last fault's kind and message).
 class fault_recorder {
  public:
   fault_recorder() : previous_(iecoop::set_fault_handler(&record)) { current() = this; }

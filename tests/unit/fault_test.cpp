@@ -18,12 +18,17 @@ void remember(const fault_info& fault) {
 }  // namespace
 
 TEST_SUITE("fault path") {
-  TEST_CASE("the default handler is installed at start-up") { CHECK((get_fault_handler() == &default_fault_handler)); }
+  // The test kit installs its handler for each test case (faults fail the case) over the
+  // one installed before: at start-up, the default handler.
+  TEST_CASE("the default handler is installed at start-up") {
+    CHECK((iecoop::testing::detail::kit.previous == &default_fault_handler));
+    CHECK((get_fault_handler() == &iecoop::testing::detail::kit_fault_handler));
+  }
 
   TEST_CASE("an installed handler receives every fault, and the previous one comes back") {
     calls = 0;
     const fault_handler previous = set_fault_handler(&remember);
-    CHECK((previous == &default_fault_handler));
+    CHECK((previous == &iecoop::testing::detail::kit_fault_handler));
     CHECK((get_fault_handler() == &remember));
     fault(fault_kind::user, "conveyor jammed");
     CHECK(calls == 1);
@@ -34,7 +39,7 @@ TEST_SUITE("fault path") {
     CHECK(calls == 2);
     CHECK(seen_kind == fault_kind::division_by_zero);
     CHECK((set_fault_handler(previous) == &remember));
-    CHECK((get_fault_handler() == &default_fault_handler));
+    CHECK((get_fault_handler() == &iecoop::testing::detail::kit_fault_handler));
   }
 
   TEST_CASE("installing nullptr restores the default handler") {

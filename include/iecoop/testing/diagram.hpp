@@ -24,13 +24,14 @@
 // run_table() does the same from a CSV table in iecoop-replay's format (`cycle,time_ms,IN,
 // PT_ms,Q,ET_ms,note`: BOOL 0/1, TIME in ms with the column named NAME_ms): per row the time
 // is set to time_ms, the driven columns are written, one cycle runs, the expected columns are
-// compared.
+// compared; a failure names the first differing line, its note, and expected against actual.
 // IWYU pragma: private, include <iecoop/testing.hpp>
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -337,6 +338,148 @@ template <class Driver, class... Lanes>
   }
   result.report = detail::layout(lanes, actual, cycles, result.ok ? cycles : first, heading);
   return result;
+}
+
+namespace detail {
+
+/// The fields of a CSV line; the last column (a note) takes the rest of the line.
+inline std::vector<std::string> csv_fields(std::string_view line, std::size_t columns) {
+  std::vector<std::string> fields;
+  while (fields.size() + 1 < columns) {
+    const std::size_t comma = line.find(',');
+    if (comma == std::string_view::npos) break;
+    fields.emplace_back(line.substr(0, comma));
+    line.remove_prefix(comma + 1);
+  }
+  fields.emplace_back(line);
+  for (std::string& f : fields) {
+    while (!f.empty() && (f.back() == '\r' || f.back() == ' ')) f.pop_back();
+    while (!f.empty() && f.front() == ' ') f.erase(f.begin());
+  }
+  return fields;
+}
+
+}  // namespace detail
+
+/**
+ * A data-driven test from a CSV table in iecoop-replay's format: a header `cycle,time_ms,`
+ * then the columns (a lane's name, or NAME_ms for a TIME lane, in ms), optionally `note`;
+ * BOOL as 0/1. Per row: the time is set to time_ms (testing::cycles; testing::plc runs
+ * cycles until its time is time_ms), the driven lanes' columns are written, one cycle runs,
+ * the expected lanes' columns are compared. The lanes are drive(name, variable) and
+ * expect(name, variable) without pictures.
+ *
+ *     CHECK(testing::run_table(run, testing::read_file("ton.trace.csv"),
+ *                              testing::drive("IN", tmr.IN), testing::drive("PT", tmr.PT),
+ *                              testing::expect("Q", tmr.Q), testing::expect("ET", tmr.ET)));
+ */
+template <class Driver, class... Lanes>
+[[nodiscard]] diagram_result run_table(Driver& run, std::string_view csv, Lanes&&... lane_list) {
+  std::vector<lane> lanes{std::forward<Lanes>(lane_list)...};
+  diagram_result result;
+  const auto fail = [&](std::string why) {
+    result.ok = false;
+    result.report = "table: " + std::move(why);
+    return result;
+  };
+  if (csv.starts_with("\xEF\xBB\xBF")) csv.remove_prefix(3);  // a UTF-8 byte order mark
+  std::vector<std::string_view> lines;
+  while (!csv.empty()) {
+    const std::size_t end = csv.find('\n');
+    const std::string_view line = csv.substr(0, end);
+    if (!line.empty() && line != "\r") lines.push_back(line);
+    csv.remove_prefix(end == std::string_view::npos ? csv.size() : end + 1);
+  }
+  if (lines.empty()) return fail("no header line");
+  const std::vector<std::string> header = detail::csv_fields(lines[0], static_cast<std::size_t>(-1));
+  std::size_t time_column = header.size();
+  std::vector<std::size_t> column(lanes.size(), header.size());
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    if (header[c] == "time_ms") time_column = c;
+    for (std::size_t k = 0; k < lanes.size(); ++k) {
+      if (header[c] == lanes[k].name || (lanes[k].is_time && header[c] == lanes[k].name + "_ms")) column[k] = c;
+    }
+  }
+  if (time_column == header.size()) return fail("no time_ms column");
+  for (std::size_t k = 0; k < lanes.size(); ++k) {
+    if (column[k] == header.size()) return fail("no column " + lanes[k].name + (lanes[k].is_time ? "_ms" : ""));
+  }
+
+  // Each row's cells go into the lanes, as a diagram's do; then it is one.
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    rows.push_back(detail::csv_fields(lines[r], header.size()));
+    if (rows.back().size() != header.size()) return fail("line " + std::to_string(r + 1) + " has too few fields");
+    for (std::size_t k = 0; k < lanes.size(); ++k) lanes[k].cells.push_back(rows.back()[column[k]]);
+  }
+  std::string error;
+  auto recorder = detail::record_lanes(lanes, error);
+  for (std::size_t r = 0; r < rows.size() && error.empty(); ++r) {
+    const std::optional<LTIME> time = detail::parse_token<LTIME>(rows[r][time_column]);
+    if (!time) {
+      error = "time_ms '" + rows[r][time_column] + "' in line " + std::to_string(r + 2) + " is no number";
+      break;
+    }
+    if constexpr (requires { run.set_now(*time); }) {
+      run.set_now(*time);
+    } else {
+      if (*time > run.now()) run.advance(*time - run.now());
+    }
+    for (lane& l : lanes) {
+      if (l.driven && !l.write(l.variable, l.cells[r])) {
+        error = "'" + l.cells[r] + "' in column " + l.name + ", line " + std::to_string(r + 2) +
+                ", is no value of its type";
+      }
+    }
+    // Only the row's own cycle is recorded (not those that brought the time to it).
+    run.on_step([](void* rec) { static_cast<detail::diagram_recorder*>(rec)->sample(cycle_clock::now(), 0); },
+                recorder.get());
+    run.step();
+    run.on_step(nullptr, nullptr);
+  }
+  if (!error.empty()) return fail(error);
+
+  const trace_view view = recorder->view();
+  if (view.size() != rows.size()) {
+    return fail(std::to_string(view.size()) + " of " + std::to_string(rows.size()) +
+                " rows ran (a fault stopped them?)");
+  }
+  std::size_t channel = 0;
+  std::string differences;
+  std::size_t first = rows.size();
+  for (std::size_t k = 0; k < lanes.size(); ++k) {
+    if (lanes[k].driven) continue;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const std::string actual = detail::recorded_text(view, r, channel);
+      if (detail::cell_matches(lanes[k], r, actual, error) || r > first) continue;
+      if (r < first) differences.clear();
+      first = r;
+      const std::optional<std::string> expected = lanes[k].normalize(lanes[k].cells[r]);
+      differences +=
+          "\n  " + lanes[k].name + ": expected " + (expected ? *expected : lanes[k].cells[r]) + ", actual " + actual;
+    }
+    ++channel;
+  }
+  if (first == rows.size()) {
+    result.report = "table: " + std::to_string(rows.size()) + " rows as expected";
+    return result;
+  }
+  const std::size_t note_column = header.back() == "note" ? header.size() - 1 : header.size();
+  std::string where = "line " + std::to_string(first + 2) + " (time_ms " + rows[first][time_column];
+  if (note_column < header.size() && !rows[first][note_column].empty()) where += ", '" + rows[first][note_column] + "'";
+  return fail(where + ") differs:" + differences + "\n  " + std::string(lines[first + 1]));
+}
+
+/// The text of the file at `path` (a CSV table next to the tests); empty if it cannot be read.
+inline std::string read_file(const char* path) {
+  std::string text;
+  if (std::FILE* f = std::fopen(path, "rb")) {
+    char buffer[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+    std::fclose(f);
+  }
+  return text;
 }
 
 }  // namespace iecoop::testing
