@@ -93,7 +93,9 @@ void on_sigint(int) { stop_requested.store(true); }
 unsigned faults = 0;
 void on_fault(const fault_info& f) {
   ++faults;
-  fmt::print("*** iecoop fault: {}: {}\n", to_string(f.kind), f.message);
+  fmt::print("*** iecoop fault: {}: {}", to_string(f.kind), f.message);
+  if (f.task != nullptr) fmt::print(" (task {}{}{})", f.task, f.pou != nullptr ? ", program " : "", f.pou != nullptr ? f.pou : "");
+  fmt::print("\n");
 }
 
 // The trace of the shift (CODESYS Trace on task Fast, record condition "on change"): the I/O,

@@ -66,6 +66,8 @@ struct PlcTest : testing::plc<make_plc> {
   GVL& gvl = get<GVL>();
 };
 
+enum class E_State : std::int16_t { Idle, Run, Fault };
+
 template <class T>
 std::string printed(const T& value) {
   return doctest::StringMaker<T>::convert(value).c_str();
@@ -340,6 +342,10 @@ TEST_SUITE("faults") {
   }
 }
 
+template <>
+inline constexpr auto iecoop::enum_components<E_State> =
+    iecoop::components<E_State::Idle, E_State::Run, E_State::Fault>{};
+
 TEST_SUITE("values") {
   TEST_CASE("IEC values print as ST writes them") {
     CHECK(printed(TRUE) == "TRUE");
@@ -352,6 +358,9 @@ TEST_SUITE("values") {
     CHECK(printed(STRING<10>("it's $5")) == "'it$'s $$5'");
     CHECK(printed(WSTRING<10>(u"\u00e9t\u00e9")) == "\"\u00e9t\u00e9\"");
     CHECK(printed(REAL(1.5f)) == "1.5");
+    CHECK(printed(E_State::Run) == "Run");
+    CHECK(printed(LTIME("LTIME#1ms500us"_iec)) == "LTIME#1ms500us");
+    CHECK(printed(DATE("D#2026-11-26"_iec)) == "D#2026-11-26");
     FB_Div fb;
     fb.count = 4;
     CHECK(printed(fb.count) == "4");

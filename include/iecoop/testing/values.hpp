@@ -27,6 +27,7 @@
 #include <iecoop/pou/variables.hpp>
 #include <iecoop/runtime/retain.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/string.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -77,6 +78,7 @@ std::string st_text(const iec_string<C, N>& value) {
 template <class T>
 std::string st_text(const T& value) {
   std::ostringstream out;
+  using iecoop::operator<<;  // also for an enumeration in the user's namespace
   out << value;
   return out.str();
 }
@@ -98,6 +100,11 @@ struct StringMaker<iecoop::integer<Rep, iecoop::integer_kind::bit_string>> {
   static String convert(iecoop::integer<Rep, iecoop::integer_kind::bit_string> value) {
     return iecoop::testing::detail::st_string(value);
   }
+};
+// An enumeration in the user's namespace, where ADL does not find iecoop's operator<<.
+template <iecoop::Enumeration E>
+struct StringMaker<E> {
+  static String convert(E value) { return iecoop::testing::detail::st_string(value); }
 };
 template <class C, std::size_t N>
 struct StringMaker<iecoop::iec_string<C, N>> {
