@@ -340,6 +340,75 @@ TEST_SUITE("faults") {
     plc.task("Fast").model_execution_time("T#8ms"_iec);
     plc.step(3);
   }
+
+  // INTERFACE I_Lamp with METHOD Switch; PROGRAM LAMP_PRG calls it through ipLamp, which the
+  // test assigns, or not.
+  struct I_Lamp : interface_base<I_Lamp> {
+    virtual BOOL Switch() = 0;
+  };
+  struct FB_Lamp : function_block<FB_Lamp, implements<I_Lamp>> {
+    BOOL Switch() override { return TRUE; }
+  };
+  struct LAMP_PRG : program<LAMP_PRG> {
+    itf<I_Lamp> ipLamp;
+    INT iBefore;
+    INT iAfter;
+    void body() {
+      iBefore += 1;
+      ipLamp->Switch();
+      iAfter += 1;
+    }
+  };
+
+  TEST_CASE("a call through an unassigned interface ends the cycle's call, not the test program") {
+    FB_Lamp lamp;
+    itf<I_Lamp> ip;
+    int before = 0;
+    int after = 0;
+    testing::cycles run{[&] {
+      ++before;
+      ip->Switch();
+      ++after;
+    }};
+    CHECK_FAULT(run.step(2), fault_kind::unassigned_interface);
+    CHECK(before == 2);
+    CHECK(after == 0);
+    CHECK_FAULT(ip->Switch(), fault_kind::unassigned_interface);
+    ip = lamp;
+    run.step();
+    CHECK(after == 1);
+  }
+
+  TEST_CASE("over an application it halts the application, as a PLC stops on an exception") {
+    auto make = [] { return application{task<LAMP_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0}}; };
+    FB_Lamp lamp;
+    testing::plc<make> plc;
+    LAMP_PRG& prg = plc.get<LAMP_PRG>();
+    testing::expect_faults faults;
+    plc.step(3);
+    REQUIRE(faults.count() == 1U);
+    CHECK(std::string(faults.last().task) == "Fast");
+    CHECK(std::string(faults.last().pou) == "LAMP_PRG");
+    CHECK(prg.iBefore == 1);
+    CHECK(prg.iAfter == 0);
+    CHECK(plc.app().state() == application_state::halted);
+    CHECK(plc.now() == LTIME(TIME(30)));
+    prg.ipLamp = lamp;
+    CHECK(plc.app().start());
+    plc.step();
+    CHECK(prg.iBefore == 2);
+    CHECK(prg.iAfter == 1);
+  }
+
+  TEST_CASE("an unexpected call through an unassigned interface fails the case, and the run goes on" *
+            doctest::should_fail()) {
+    testing::cycles run{[] {
+      itf<I_Lamp> ip;
+      ip->Switch();
+    }};
+    run.step(5);
+    CHECK(run.cycle() == 1U);
+  }
 }
 
 template <>

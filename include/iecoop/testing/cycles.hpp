@@ -12,7 +12,9 @@
 //     testing::cycles call{[&] { fb("xIn"_ = x, "iLimit"_ = 5); }, "T#1ms"_iec};   // a call with arguments
 //
 // Each cycle: the cycle clock is set to now(), forced values are written, the body runs,
-// forced values are written again, now() moves on by the cycle time.
+// forced values are written again, now() moves on by the cycle time. A fault the body cannot
+// go past (a call through an unassigned interface) ends the body's call; the next cycle calls
+// it again.
 // IWYU pragma: private, include <iecoop/testing.hpp>
 #pragma once
 
@@ -22,6 +24,7 @@
 
 #include <iecoop/standard/cycle_clock.hpp>
 #include <iecoop/testing/driver.hpp>
+#include <iecoop/testing/faults.hpp>
 #include <iecoop/types/literals.hpp>
 #include <iecoop/types/time.hpp>
 
@@ -59,7 +62,7 @@ class cycles : public driver<cycles<Body>> {
     for (std::uint64_t i = 0; i < n; ++i) {
       cycle_clock::set(now_);
       this->forces_.apply_at_start();
-      body_();
+      detail::call_guarded(body_);  // a call through an unassigned interface ends it (faults.hpp)
       this->forces_.apply_at_end();
       now_ = now_ + cycle_time_;
       ++cycle_;

@@ -16,12 +16,20 @@
 // that a fault every cycle is reported once, not an hour of times. Outside test cases (static
 // initialisation, main) faults go to the handler that was installed before (by default: print
 // and abort).
+//
+// Most faults let the faulting operation finish with a defined result. A call through an
+// unassigned interface variable cannot finish (there is no block to call): the library stops
+// the program if the handler returns. In a test case the kit's handler throws
+// testing::call_abandoned instead, after recording the fault; the drivers catch it and end the
+// cycle there (testing::plc: the application halts, as a PLC stops on an exception), and so
+// does CHECK_FAULT. (Built without exceptions, the program still stops.)
 // IWYU pragma: private, include <iecoop/testing.hpp>
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <string_view>
 
@@ -69,6 +77,47 @@ inline std::string describe(const fault_record& f) {
   text += ")";
   return text;
 }
+
+/// Thrown by the kit's fault handler in a test case after a fault the faulting call cannot
+/// go past (a call through an unassigned interface variable), where the library would stop
+/// the program; the drivers and CHECK_FAULT catch it (see above).
+struct call_abandoned : std::exception {
+  [[nodiscard]] const char* what() const noexcept override {
+    return "iecoop: a call through an unassigned interface could not go on (the fault is reported above); "
+           "call it through testing::cycles or testing::plc, or in CHECK_FAULT";
+  }
+};
+
+namespace detail {
+
+/// TRUE for a fault whose call cannot finish: the library aborts if the handler returns.
+[[nodiscard]] constexpr bool abandons_call(fault_kind kind) noexcept {
+  return kind == fault_kind::unassigned_interface;
+}
+
+/// Calls `f`; FALSE if a fault abandoned the call (call_abandoned), TRUE if it returned.
+template <class F>
+bool call_guarded(F&& f) {
+#if defined(__cpp_exceptions)
+  try {
+    f();
+  } catch (const call_abandoned&) {
+    return false;
+  }
+#else
+  f();
+#endif
+  return true;
+}
+
+/// After the kit's handler recorded a fault the call cannot go past: leave the call.
+inline void abandon_call() {
+#if defined(__cpp_exceptions)
+  throw call_abandoned{};
+#endif
+}
+
+}  // namespace detail
 
 class expect_faults;
 
@@ -186,6 +235,7 @@ inline void kit_fault_handler(const fault_info& info) {
   const fault_record record{info.kind, info.message, info.task, info.pou, cycle_clock::now()};
   if (kit.expecting != nullptr) {
     kit.expecting->record(record);
+    if (abandons_call(info.kind)) abandon_call();
     return;
   }
   if (!doctest::is_running_in_test) {
@@ -206,6 +256,7 @@ inline void kit_fault_handler(const fault_info& info) {
     static_cast<void>(check.log());
     check.react();
   }
+  if (abandons_call(info.kind)) abandon_call();
 }
 
 /// Installs the kit's fault handler for each test case and clears the per-case state: a
@@ -253,7 +304,7 @@ DOCTEST_REGISTER_LISTENER("iecoop_testing", 0, iecoop::testing::detail::kit_list
 #define IECOOP_FAULT_ASSERT_(assertion, expression, kind)                                                 \
   do {                                                                                                    \
     ::iecoop::testing::expect_faults raised;                                                              \
-    static_cast<void>(expression);                                                                        \
+    ::iecoop::testing::detail::call_guarded([&] { static_cast<void>(expression); });                      \
     assertion(raised.only(kind), #expression << " raised " << raised.text() << "; expected "              \
                                              << std::string(::iecoop::to_string(kind)) << ", only that"); \
   } while (false)

@@ -16,7 +16,8 @@
 //
 // testing::plc<Make> owns the application `Make()` returns and starts it; the fixture's
 // constructor is the test's setup and its destructor the teardown (the application stops:
-// FB_Exit). testing::plc_driver<App> drives an application the test owns itself.
+// FB_Exit). testing::plc_driver<App> drives an application the test owns itself. A call
+// through an unassigned interface halts the application (faults.hpp).
 // IWYU pragma: private, include <iecoop/testing.hpp>
 #pragma once
 
@@ -29,6 +30,7 @@
 #include <iecoop/runtime/application.hpp>
 #include <iecoop/runtime/cycle_observer.hpp>
 #include <iecoop/testing/driver.hpp>
+#include <iecoop/testing/faults.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -64,7 +66,13 @@ class plc_driver : public driver<plc_driver<App>> {
 
   void run_cycles(std::uint64_t n) {
     for (std::uint64_t i = 0; i < n; ++i) {
-      app_.run_for(app_.base_cycle());
+      const LTIME end = app_.now() + app_.base_cycle();
+      if (!detail::call_guarded([this] { app_.run_for(app_.base_cycle()); })) {
+        // A fault a program could not go past (faults.hpp): the application stops, as a PLC
+        // does on an exception (app().start() runs it again), and its time goes on.
+        app_.scheduler().halt();
+        app_.scheduler().advance_to(end);
+      }
       ++cycle_;
       this->stepped();
     }
