@@ -166,6 +166,19 @@ TEST_SUITE("cycles") {
     run.step();
     CHECK(high == 3);
   }
+
+  TEST_CASE("pulse gives a forced BOOL its forced value back, at once") {
+    BOOL stop;
+    int low = 0;
+    testing::cycles run{[&] { low += stop ? 0 : 1; }};
+    run.force(stop, TRUE);  // no cycle ran since: the variable is still FALSE
+    run.pulse(stop, 2, FALSE);
+    CHECK(low == 2);
+    CHECK(stop);
+    CHECK(run.forced(stop));
+    run.step(3);
+    CHECK(low == 2);  // forced TRUE again, not FALSE
+  }
 }
 
 TEST_SUITE("forcing") {

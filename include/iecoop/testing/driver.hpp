@@ -122,16 +122,18 @@ class driver {
   template <class V>
   void pulse(V& input, std::uint64_t cycles = 1, BOOL value = TRUE, call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
-    const bool was_forced = forces_.forced(input);
-    const BOOL before = static_cast<BOOL>(input);
+    // A forced input gets its forced value back (which the variable does not hold yet if no
+    // cycle ran since it was forced), at once, as an input not forced gets its value.
+    const auto forced_before = forces_.forced_value(input);
+    const BOOL before = forced_before ? BOOL(*forced_before) : static_cast<BOOL>(input);
     forces_.force(input, value);
     run(cycles);
-    if (was_forced) {
+    if (forced_before) {
       forces_.force(input, before);
     } else {
       forces_.release(input);
-      detail::write_variable(input, before);
     }
+    detail::write_variable(input, before);
   }
 
   // --- Forcing (forcing.hpp) -----------------------------------------------------------

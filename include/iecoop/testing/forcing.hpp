@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <type_traits>
 
 #include <doctest/doctest.h>
@@ -111,6 +112,17 @@ class force_table {
   template <class V>
   [[nodiscard]] bool forced(const V& variable) const noexcept {
     return find(&variable, &detail::type_tag<std::remove_cvref_t<V>>) != nullptr;
+  }
+
+  /// The value `variable` is forced to, or nullopt if it is not forced.
+  template <class V>
+  [[nodiscard]] std::optional<detail::forced_value_t<V>> forced_value(const V& variable) const noexcept {
+    using U = detail::forced_value_t<V>;
+    const entry* e = find(&variable, &detail::type_tag<std::remove_cvref_t<V>>);
+    if (e == nullptr) return std::nullopt;
+    U value;
+    std::memcpy(static_cast<void*>(&value), e->value, sizeof(U));
+    return value;
   }
 
   /// The number of variables forced now.
