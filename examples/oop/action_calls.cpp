@@ -13,10 +13,7 @@
 //
 // C++: an action is a member function without parameters; a PROGRAM's one instance is
 // `PRG_Line::instance()`, so `PRG_Line.A_CloseBatch();` is `PRG_Line::instance().A_CloseBatch();`.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 namespace seed_action_calls {
 
@@ -106,7 +103,8 @@ TEST_SUITE("seed: calling actions, <Program_name>.<Action_name> and <Instance_na
   TEST_CASE("<Instance_name>.<Action_name>: the action works on the instance's data and does not run its body") {
     FB_Counter fbCounter;
     FB_Counter other;
-    for (int i = 0; i < 3; ++i) fbCounter("bPulse"_ = TRUE);
+    testing::cycles run{[&] { fbCounter("bPulse"_ = TRUE); }};
+    run.step(3);
     other("bPulse"_ = TRUE);
     CHECK(fbCounter.iCount == 3);
     fbCounter.Reset();  // fbCounter.Reset();   bPulse is still TRUE, yet nothing is counted
@@ -119,15 +117,16 @@ TEST_SUITE("seed: calling actions, <Program_name>.<Action_name> and <Instance_na
   TEST_CASE("inside its own program, by name: PRG_Line closes a batch after 10 parts") {
     PRG_Line line;
     PLC_PRG plc_prg;
+    testing::cycles run{plc_prg};
     plc_prg.bSensor = TRUE;
-    for (int cycle = 1; cycle <= 9; ++cycle) plc_prg();
+    run.step(9);
     CHECK(plc_prg.iParts == 9);
     CHECK(plc_prg.iBatches == 0);
-    plc_prg();  // the 10th part: A_CloseBatch();
+    run.step();  // the 10th part: A_CloseBatch();
     CHECK(plc_prg.iParts == 0);
     CHECK(plc_prg.iBatches == 1);
     CHECK(line.fbParts.iCount == 0);
-    for (int cycle = 1; cycle <= 25; ++cycle) plc_prg();
+    run.step(25);
     CHECK(plc_prg.iBatches == 3);
     CHECK(plc_prg.iParts == 5);
   }
@@ -135,12 +134,13 @@ TEST_SUITE("seed: calling actions, <Program_name>.<Action_name> and <Instance_na
   TEST_CASE("<Program_name>.<Action_name>: PLC_PRG closes PRG_Line's batch early, without running PRG_Line's body") {
     PRG_Line line;
     PLC_PRG plc_prg;
+    testing::cycles run{plc_prg};
     plc_prg.bSensor = TRUE;
-    for (int cycle = 1; cycle <= 4; ++cycle) plc_prg();
+    run.step(4);
     CHECK(line.iParts == 4);
     plc_prg.bSensor = FALSE;
     plc_prg.bCloseBatch = TRUE;
-    plc_prg();  // PRG_Line(...) first, counting nothing, then PRG_Line.A_CloseBatch()
+    run.step();  // PRG_Line(...) first, counting nothing, then PRG_Line.A_CloseBatch()
     CHECK(plc_prg.bCloseBatch == FALSE);
     CHECK(line.iBatches == 1);  // the program's own data, changed by the action
     CHECK(line.iParts == 0);
@@ -148,7 +148,7 @@ TEST_SUITE("seed: calling actions, <Program_name>.<Action_name> and <Instance_na
     // PLC_PRG read PRG_Line's outputs before the action ran: it sees the change next cycle.
     CHECK(plc_prg.iParts == 4);
     CHECK(plc_prg.iBatches == 0);
-    plc_prg();
+    run.step();
     CHECK(plc_prg.iParts == 0);
     CHECK(plc_prg.iBatches == 1);
 

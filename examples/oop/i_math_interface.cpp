@@ -2,10 +2,7 @@
 // I_Math, FB_MathMen, FB_MethErase and PROGRAM MAIN. The POUs, with the seed's ST beside them,
 // are in i_math_interface.hpp, which the firmware example embedded/examples/i_math_interface.cpp
 // runs on a Cortex-M as well.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 #include "i_math_interface.hpp"
 
@@ -38,9 +35,10 @@ TEST_SUITE("seed: I_Math, FB_MathMen, FB_MethErase and MAIN") {
 
   TEST_CASE("switching at run time, cycle by cycle") {
     MAIN main;
+    testing::cycles run{main};
     for (int cycle = 0; cycle < 4; ++cycle) {
       main.bUseMemInstance = BOOL(cycle % 2 == 0);
-      main();
+      run.step();
       CHECK(main.rResultInterface == (cycle % 2 == 0 ? 15.0f : 0.0f));
     }
     // The interface variable is an input of MAIN, so a caller may also assign it by name.

@@ -21,10 +21,7 @@
 // action. LOAD is the one input the body does not assign: as in the seed, the engineer
 // writes it online (here: the test), 0-1-0, before counting starts. The seed's END_IF is
 // missing; ST needs it.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 namespace seed_main_ctd_action {
 
@@ -62,45 +59,42 @@ using seed_main_ctd_action::MAIN;
 TEST_SUITE("seed: MAIN with CTD Inst and ACT_Action") {
   TEST_CASE("CTD counts down only after LOAD went 0-1-0, the action adds A and B while In is TRUE") {
     MAIN main;
-    main();
+    testing::cycles run{main};
+    run.step();
     CHECK(main.Inst.CV == 0);
     CHECK(main.Erg == TRUE);  // CV = 0 before anything is loaded: Q is already TRUE
     CHECK(main.C == 0);
 
     // Counting before LOAD: CV stays at 0 (a WORD counter does not go below 0).
     main.In = TRUE;
-    main();
+    run.step();
     CHECK(main.Inst.CV == 0);
     CHECK(main.C == 15);  // ACT_Action ran with In TRUE: C := 5 + 10
     main.In = FALSE;
-    main();
+    run.step();
 
     // LOAD 0-1-0, written online.
     main.Inst.LOAD = TRUE;
-    main();
+    run.step();
     CHECK(main.Inst.CV == 3);
     CHECK(main.Erg == FALSE);
     main.Inst.LOAD = FALSE;
-    main();
+    run.step();
 
     // Now each rising edge of In counts down; Erg once CV reaches 0.
     for (int edge = 1; edge <= 3; ++edge) {
-      main.In = TRUE;
-      main();
+      run.pulse(main.In);  // one cycle with In TRUE
       CHECK(main.Inst.CV == 3 - edge);
       CHECK(main.Erg == BOOL(edge == 3));
-      main.In = FALSE;
-      main();
+      run.step();  // and one with In FALSE
     }
   }
 
   TEST_CASE("LOAD held TRUE keeps CV at PV: edges of In are not counted") {
     MAIN main;
+    testing::cycles run{main};
     main.Inst.LOAD = TRUE;
-    for (int i = 0; i < 4; ++i) {
-      main.In = BOOL(i % 2 == 0);
-      main();
-    }
+    CHECK(testing::run_diagram(run, testing::drive("In", main.In, "#_#_")));  // two rising edges, one cycle each
     CHECK(main.Inst.CV == 3);
     CHECK(main.Erg == FALSE);
   }

@@ -11,10 +11,7 @@
 //     PROGRAM Main WITH MainTask : PLC_PRG;
 //
 // PRG_Counter is in no task: only PLC_PRG calls it, so it is an ordinary variable.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 namespace seed_program_call {
 
@@ -61,13 +58,6 @@ using namespace iecoop;
 using seed_program_call::PLC_PRG;
 using seed_program_call::PRG_Counter;
 
-namespace {
-int duplicate_faults = 0;
-void count_duplicates(const fault_info& fault) {
-  if (fault.kind == fault_kind::duplicate_program) ++duplicate_faults;
-}
-}  // namespace
-
 TEST_SUITE("seed: PROGRAM called with := and =>") {
   TEST_CASE("a program keeps its values between calls, whoever calls it") {
     PRG_Counter counter;  // the one instance
@@ -85,14 +75,12 @@ TEST_SUITE("seed: PROGRAM called with := and =>") {
   }
 
   TEST_CASE("a program has exactly one instance") {
-    duplicate_faults = 0;
     PRG_Counter first;
     CHECK(&PRG_Counter::instance() == &first);
     {
-      const fault_handler previous = set_fault_handler(&count_duplicates);
+      testing::expect_faults faults;
       PRG_Counter second;  // a second instance while the first lives: a fault
-      set_fault_handler(previous);
-      CHECK(duplicate_faults == 1);
+      CHECK(faults.count(fault_kind::duplicate_program) == 1);
       CHECK(&PRG_Counter::instance() == &first);
     }
     CHECK(PRG_Counter::exists());

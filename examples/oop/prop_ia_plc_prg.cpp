@@ -2,10 +2,7 @@
 // property prop_iA and of PLC_PRG. The POUs, with the seed's ST beside them, are in
 // prop_ia_plc_prg.hpp, which the firmware example embedded/examples/property_and_method.cpp
 // runs on a Cortex-M as well.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 #include "prop_ia_plc_prg.hpp"
 
@@ -16,19 +13,21 @@ using seed_prop_ia::PLC_PRG;
 TEST_SUITE("seed: FB_A.prop_iA and PLC_PRG") {
   TEST_CASE("iVar counts up to 500, then the property resets it to 0") {
     PLC_PRG plc_prg;
-    for (int cycle = 1; cycle <= 500; ++cycle) plc_prg();
+    testing::cycles run{plc_prg};
+    run.step(500);
     CHECK(plc_prg.iVar == 500);
-    plc_prg();  // 501 > 500: prop_iA := 0
+    run.step();  // 501 > 500: prop_iA := 0
     CHECK(plc_prg.iVar == 0);
-    plc_prg();
+    run.step();
     CHECK(plc_prg.iVar == 1);
   }
 
   TEST_CASE("1,200 cycles: the value wraps to 0 after 500, twice") {
     PLC_PRG plc_prg;
+    testing::cycles run{plc_prg};
     int wraps = 0;
     for (int cycle = 1; cycle <= 1200; ++cycle) {
-      plc_prg();
+      run.step();
       if (plc_prg.iVar == 0) ++wraps;
       CHECK(plc_prg.iVar <= 500);
     }

@@ -18,10 +18,7 @@
 // One difference remains: in CODESYS a property without the pragma is not monitored at all
 // (its "Attribute 'monitoring'" page); iecoop has no such mode, and a property declared without
 // a monitoring option is monitored as 'call'. We write `monitoring::call` out where ST has it.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 #include <type_traits>
 
@@ -99,9 +96,8 @@ static_assert(std::is_same_v<decltype(FB_A::prop_iA_variable)::monitoring_mode,
 TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'variable'") {
   TEST_CASE("'call': each display calls Get, so the watch list runs its side effect and shows the current value") {
     FB_A fbA;
-    fbA();
-    fbA();
-    fbA();
+    testing::cycles run{fbA};
+    run.step(3);
     CHECK(fbA.iGets == 0);  // nothing has read the property yet
     INT shown = fbA.prop_iA_call.monitor();
     CHECK(shown == 3);
@@ -109,7 +105,7 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
     shown = fbA.prop_iA_call.monitor();
     CHECK(shown == 3);
     CHECK(fbA.iGets == 2);  // and again, on each display
-    fbA();
+    run.step();
     shown = fbA.prop_iA_call.monitor();
     CHECK(shown == 4);  // never outdated: the value is fetched when it is shown
     CHECK(fbA.iGets == 3);
@@ -117,7 +113,8 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
 
   TEST_CASE("'variable': each access saves the value, the display shows it and calls nothing") {
     PLC_PRG plc_prg;
-    plc_prg();  // iA = 1; the comparison and the assignment call Get twice
+    testing::cycles run{plc_prg};
+    run.step();  // iA = 1; the comparison and the assignment call Get twice
     CHECK(plc_prg.fbA.iGets == 2);
     CHECK(plc_prg.iVar == 1);
     INT shown = plc_prg.fbA.prop_iA_variable.monitor();
@@ -127,7 +124,7 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
     CHECK(plc_prg.fbA.iGets == 2);  // displaying did not run Get: no side effect
     CHECK(plc_prg.fbA.prop_iA_variable_monitor == 1);
 
-    plc_prg();
+    run.step();
     shown = plc_prg.fbA.prop_iA_variable.monitor();
     CHECK(shown == 2);  // the code accessed the property again: the display follows
     CHECK(plc_prg.fbA.iGets == 4);
@@ -135,10 +132,11 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
 
   TEST_CASE("'variable': the shown value becomes outdated when the code no longer accesses the property") {
     PLC_PRG plc_prg;
-    for (int cycle = 1; cycle <= 5; ++cycle) plc_prg();
+    testing::cycles run{plc_prg};
+    run.step(5);
     CHECK(plc_prg.fbA.prop_iA_variable.monitor() == 5);
     plc_prg.bRead = FALSE;  // from now on only the body of fbA runs: iA goes on counting
-    for (int cycle = 6; cycle <= 10; ++cycle) plc_prg();
+    run.step(5);  // cycles 6 to 10
     CHECK(plc_prg.fbA.iA == 10);
     CHECK(plc_prg.fbA.prop_iA_variable.monitor() == 5);  // outdated, as the seed warns
     CHECK(plc_prg.fbA.iGets == 10);                       // 2 per cycle while bRead, none since
@@ -146,13 +144,14 @@ TEST_SUITE("seed: property monitoring, {attribute 'monitoring' := 'call'} and 'v
     CHECK(plc_prg.fbA.prop_iA_call.monitor() == 10);
     CHECK(plc_prg.fbA.iGets == 11);
     plc_prg.bRead = TRUE;
-    plc_prg();
+    run.step();
     CHECK(plc_prg.fbA.prop_iA_variable.monitor() == 11);
   }
 
   TEST_CASE("'variable': a Set is an access too, the display shows the value written") {
     PLC_PRG plc_prg;
-    for (int cycle = 1; cycle <= 501; ++cycle) plc_prg();
+    testing::cycles run{plc_prg};
+    run.step(501);
     // Cycle 501: Get saw 501 (> 500), the Set saved 0, the last Get 0.
     CHECK(plc_prg.iVar == 0);
     CHECK(plc_prg.fbA.prop_iA_variable.monitor() == 0);

@@ -1,10 +1,7 @@
 // Seed: "属性" (Chinese page on PROPERTY), the example — FUNCTION_BLOCK fb_A with the property
 // Value_A, whose Get accessor reads iA and whose Set accessor writes iB; the block's body
 // counts iA up. Complete in the seed; the test is ours.
-#include <doctest/doctest.h>
-
-#include <iecoop/iecoop.hpp>
-#include <iecoop/ostream.hpp>
+#include <iecoop/testing.hpp>
 
 namespace seed_value_a {
 
@@ -41,9 +38,8 @@ using seed_value_a::fb_A;
 TEST_SUITE("seed: fb_A.Value_A (Get reads iA, Set writes iB)") {
   TEST_CASE("reading calls Get, writing calls Set, and they reach different variables") {
     fb_A fb;
-    fb();
-    fb();
-    fb();
+    testing::cycles run{fb};
+    run.step(3);
     CHECK(fb.Value_A == 3);  // Get: iA
     fb.Value_A = 10;         // Set: iB := 10
     CHECK(fb.iB == 10);
