@@ -41,6 +41,10 @@ foreach(item IN LISTS TEST_PROPERTIES)
   endif()
 endforeach()
 
+# A name with ';' cannot be a CTest test's (CMake splits lists there): it is left out, loudly.
+string(ASCII 1 semicolon)
+string(REPLACE ";" "${semicolon}" listing "${listing}")
+
 set(script "")
 set(names "")
 string(REGEX MATCHALL "<TestCase name=\"[^\"]*\"( testsuite=\"[^\"]*\")?" cases "${listing}")
@@ -54,6 +58,12 @@ foreach(entry IN LISTS cases)
   set(name "${case}")
   if(NOT suite STREQUAL "")
     set(name "${suite}.${case}")
+  endif()
+  if(name MATCHES "${semicolon}")
+    string(REPLACE "${semicolon}" ";" name "${name}")
+    message(WARNING "iecoop_discover_tests: the test case '${name}' has a ';' in its name, which CTest cannot "
+                    "carry; it is not registered: name it without ';'")
+    continue()
   endif()
   if(name IN_LIST names)
     message(WARNING "iecoop_discover_tests: two test cases are called '${name}'; the second is not registered")
