@@ -562,3 +562,37 @@ TEST_SUITE("table") {
     CHECK(r.report == "table: no column Q");
   }
 }
+
+namespace {
+struct FB_State : function_block<FB_State> {
+  var<E_State> eState{E_State::Fault};
+  void body() {}
+};
+}  // namespace
+
+TEST_SUITE("values") {
+  TEST_CASE("a failed check prints an enumeration by its name") {
+    E_State eState = E_State::Idle;
+    const doctest::String text = doctest::toString(eState);
+    CHECK(std::string(text.c_str()) == "Idle");
+    FB_State fb;
+    CHECK(std::string(doctest::toString(fb.eState).c_str()) == "Fault");
+  }
+}
+
+TEST_SUITE("forcing") {
+  TEST_CASE("release_and_restore gives back the value from before the force") {
+    FB_Div fb;
+    testing::cycles run{fb};
+    fb.a = 8;
+    run.force(fb.a, INT(2));
+    run.force(fb.a, INT(4));  // forced again: the value before the first force stays
+    run.step();
+    CHECK(fb.q == 4);
+    run.release_and_restore(fb.a);
+    CHECK(fb.a == 8);
+    CHECK_FALSE(run.forced(fb.a));
+    run.step();
+    CHECK(fb.q == 8);
+  }
+}

@@ -152,6 +152,11 @@ class driver {
   void release(const V& variable) noexcept {
     forces_.release(variable);
   }
+  /// Releases `variable` and gives it back its value from before the force.
+  template <class V>
+  void release_and_restore(V& variable) {
+    forces_.release_and_restore(variable);
+  }
   void release_all() noexcept { forces_.release_all(); }
   template <class V>
   [[nodiscard]] bool forced(const V& variable) const noexcept {

@@ -141,6 +141,8 @@ struct kit_state {
   bool installed = false;
   const char* file = nullptr;  // where the test called the driver that is running cycles now
   unsigned line = 0;
+  const char* case_file = nullptr;  // the running test case, for a fault outside the drivers
+  unsigned case_line = 0;
 };
 inline kit_state kit{};
 
@@ -249,9 +251,10 @@ inline void kit_fault_handler(const fault_info& info) {
         (kit.unexpected == max_reported_faults ? " (further faults in this test case are counted, not shown)" : "");
     // A failed check "no iecoop fault" whose value is the fault: reporters see it as any
     // failed CHECK (doctest's JUnit reporter, for one, ignores messages).
-    doctest::detail::ResultBuilder check(doctest::assertType::DT_CHECK, kit.file != nullptr ? kit.file : __FILE__,
-                                         kit.file != nullptr ? static_cast<int>(kit.line) : __LINE__,
-                                         "no iecoop fault");
+    // At the test's line that drives the cycles, else at its test case.
+    const bool driving = kit.file != nullptr;
+    doctest::detail::ResultBuilder check(doctest::assertType::DT_CHECK, driving ? kit.file : kit.case_file,
+                                         static_cast<int>(driving ? kit.line : kit.case_line), "no iecoop fault");
     check.setResult(doctest::detail::Result(false, doctest::String(text.c_str())));
     static_cast<void>(check.log());
     check.react();
@@ -266,8 +269,8 @@ struct kit_listener : doctest::IReporter {
   void report_query(const doctest::QueryData& /*data*/) override {}
   void test_run_start() override {}
   void test_run_end(const doctest::TestRunStats& /*stats*/) override {}
-  void test_case_start(const doctest::TestCaseData& /*data*/) override { begin(); }
-  void test_case_reenter(const doctest::TestCaseData& /*data*/) override { begin(); }
+  void test_case_start(const doctest::TestCaseData& data) override { begin(data); }
+  void test_case_reenter(const doctest::TestCaseData& data) override { begin(data); }
   void test_case_end(const doctest::CurrentTestCaseStats& /*stats*/) override { end(); }
   void test_case_exception(const doctest::TestCaseException& /*data*/) override {}
   void subcase_start(const doctest::SubcaseSignature& /*signature*/) override {}
@@ -276,9 +279,11 @@ struct kit_listener : doctest::IReporter {
   void log_message(const doctest::MessageData& /*data*/) override {}
   void test_case_skipped(const doctest::TestCaseData& /*data*/) override {}
 
-  static void begin() noexcept {
+  static void begin(const doctest::TestCaseData& data) noexcept {
     kit.unexpected = 0;
     kit.file = nullptr;
+    kit.case_file = data.m_file.c_str();
+    kit.case_line = data.m_line;
     kit.expecting = nullptr;
     if (!kit.installed) {
       kit.previous = set_fault_handler(&kit_fault_handler);

@@ -66,6 +66,16 @@ void write_variable(located<T, A, Image>& /*target*/, const U& value) {
   Image::template write<T, A>(T(value));
 }
 
+/// The value of a variable: a wrapper's get(), or the variable itself.
+template <class V>
+forced_value_t<V> read_variable(const V& variable) {
+  if constexpr (requires { variable.get(); }) {
+    return variable.get();
+  } else {
+    return variable;
+  }
+}
+
 /// A distinct address per type: with the variable's address, what identifies a forced
 /// variable (located variables are empty, and several may share an address).
 template <class V>
@@ -103,6 +113,16 @@ class force_table {
   template <class V>
   void release(const V& variable) noexcept {
     if (entry* e = find(&variable, &detail::type_tag<std::remove_cvref_t<V>>)) remove(*e);
+  }
+
+  /// Releases `variable` and gives it back the value it had when it was first forced
+  /// (CODESYS: "Unforce and restore values").
+  template <class V>
+  void release_and_restore(V& variable) {
+    if (entry* e = find(&variable, &detail::type_tag<std::remove_cvref_t<V>>)) {
+      e->apply(e->target, e->original);
+      remove(*e);
+    }
   }
 
   /// Releases every forced variable and drops pending writes.
@@ -157,6 +177,7 @@ class force_table {
     void (*apply)(void* target, const std::byte* value);
     bool once;
     alignas(16) std::byte value[max_value_bytes];
+    alignas(16) std::byte original[max_value_bytes];  // the value before the first force
   };
 
   template <class V, class T>
@@ -167,6 +188,9 @@ class force_table {
     static_assert(std::is_trivially_copyable_v<U> && sizeof(U) <= max_value_bytes && alignof(U) <= 16,
                   "iecoop: a test forces elementary values, enumerations, STRINGs and STRUCTs of up to 256 bytes; "
                   "force a larger variable member by member");
+    static_assert(!std::is_arithmetic_v<T> || std::is_same_v<T, bool> || std::is_arithmetic_v<U>,
+                  "iecoop: a forced value is a value of the variable's IEC type, not a C++ number; write it as "
+                  "one, e.g. force(iCount, INT(11)) or force(wMask, WORD(16#FF))");
     static_assert(std::is_convertible_v<const T&, U>,
                   "iecoop: the forced value is not of the variable's type; give a value of that type, e.g. "
                   "force(wCount, WORD(3))");
@@ -179,6 +203,8 @@ class force_table {
         return;
       }
       e = &entries_[count_++];
+      const U before = detail::read_variable(variable);
+      std::memcpy(e->original, static_cast<const void*>(&before), sizeof(U));
     }
     e->key = &variable;
     e->type = type;

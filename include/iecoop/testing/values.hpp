@@ -4,7 +4,8 @@
 //
 //   BOOL TRUE / FALSE          TIME T#1s500ms, LTIME LTIME#...    REAL 1.5
 //   INT, DINT, ... 42          BYTE 16#0F, WORD 16#00FF, ...      dates D#2026-11-26, ...
-//   STRING 'abc' ($' $$ $N)   WSTRING "abc"                      enumerations by name (enum_components)
+//   STRING 'abc' ($' $$ $N)   WSTRING "abc"                      enumerations by name (enum_components;
+//                                                                 else their value)
 //
 // The variables' wrappers (var<>, outputs, VAR_IN_OUT, RETAIN, PERSISTENT, located variables,
 // PROPERTYs) print their value. <iecoop/ostream.hpp> prints the same but for STRING (no quotes)
@@ -106,6 +107,17 @@ template <iecoop::Enumeration E>
 struct StringMaker<E> {
   static String convert(E value) { return iecoop::testing::detail::st_string(value); }
 };
+#if DOCTEST_VERSION_MAJOR == 2 && DOCTEST_VERSION_MINOR == 4
+// doctest 2.4 prints an enumeration as its underlying integer without asking StringMaker
+// (toString's overload for is_enum types): an IEC enumeration is not one of those for it, so
+// that `CHECK(eState == E_State::Run)` prints `Idle == Run`.
+namespace detail::types {
+template <iecoop::Enumeration E>
+struct is_enum<E> {
+  static constexpr bool value = false;
+};
+}  // namespace detail::types
+#endif
 template <class C, std::size_t N>
 struct StringMaker<iecoop::iec_string<C, N>> {
   static String convert(const iecoop::iec_string<C, N>& value) { return iecoop::testing::detail::st_string(value); }
