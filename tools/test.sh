@@ -7,10 +7,11 @@
 #   2. g++ Release (-O3, the build the benchmarks are measured in: GCC warns of some things,
 #      -Warray-bounds, -Wrestrict, only when it optimises),
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
-# tests, the compile-fail checks, the examples, the consumer projects (find_package,
-# add_subdirectory, FetchContent) and iecoop-check's tests; the g++ build also checks every
-# example clean with iecoop-check, builds the benchmarks and compiles every header on its own
-# with -fno-exceptions -fno-rtti.
+# tests (and the test kit's, with its JUnit reports read by xmllint), the compile-fail checks,
+# the examples and iecoop-check's tests; the g++ build also builds the consumer projects
+# (find_package, add_subdirectory, FetchContent, each with unit tests written with the test
+# kit), checks every example clean with iecoop-check, builds the benchmarks and compiles every
+# header on its own with -fno-exceptions -fno-rtti.
 #   3. the firmware examples for Cortex-M3 and Cortex-M4F (CMake presets cortex-m3 and
 #      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
 #      (CTest label `embedded`; see docs/embedded.md).
@@ -70,7 +71,7 @@ firmware() {
 # not depend on the compiler, and the clang build compiles every header through the tests.
 run clang-sanitize clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
   "-DIECOOP_SANITIZE=address;undefined" -DIECOOP_CHECK_EXAMPLES=OFF -DIECOOP_BUILD_FUZZ=ON -DIECOOP_BUILD_BENCH=OFF \
-  -DIECOOP_HEADER_CHECKS=OFF
+  -DIECOOP_HEADER_CHECKS=OFF -DIECOOP_CONSUMER_TESTS=OFF
 run gcc-release g++ -DCMAKE_BUILD_TYPE=Release
 firmware cortex-m3
 firmware cortex-m4f
