@@ -25,6 +25,6 @@ endif()
 step(${CMAKE_CTEST_COMMAND} --build-and-test ${SOURCE_DIR}/tests/consumer/find_package ${WORK_DIR}/consumer
      --build-generator ${GENERATOR}
      --build-options -DCMAKE_CXX_COMPILER=${COMPILER} -DCMAKE_PREFIX_PATH=${prefix} -DIECOOP_EXPECT_CHECK=OFF
-                   -DIECOOP_CONSUMER_KIT=OFF
+                   -DIECOOP_CONSUMER_KIT=OFF -DIECOOP_EXPECT_NO_KIT=ON
      --test-command iecoop_consumer)
 message("plain_install: configured without doctest, fmt and Google Benchmark, installed, and found")

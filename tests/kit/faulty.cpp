@@ -1,7 +1,6 @@
 // A test program of which two cases fail (a fault in a task, and a failed check), between
 // cases that pass: cmake/check_kit_junit.cmake runs it whole and through CTest, and reads the
 // JUnit XML both write with xmllint. Not registered as tests of its own: it must fail.
-#define IECOOP_TESTING_MAIN
 #include <iecoop/testing.hpp>
 
 using namespace iecoop;

@@ -1,6 +1,5 @@
 // The test kit's own tests (<iecoop/testing.hpp>, docs/testing.md), written with the kit and
 // registered with iecoop_discover_tests, as a user's test program is.
-#define IECOOP_TESTING_MAIN
 #include <iecoop/testing.hpp>
 
 #include <sstream>
