@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "count_runner.hpp"
 #include "testing_programs.hpp"
 
 namespace {
@@ -29,21 +30,4 @@ const kernel all_kernels[] = {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  if (argc == 2 && std::strcmp(argv[1], "--list") == 0) {
-    for (const kernel& k : all_kernels) std::printf("%s\n", k.name);
-    return 0;
-  }
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: iecoop_bench_testing_count <kernel> <n> | --list\n");
-    return 2;
-  }
-  for (const kernel& k : all_kernels) {
-    if (std::strcmp(argv[1], k.name) == 0) {
-      // The result depends on every cycle: the optimiser keeps them all.
-      return k.run(std::strtoull(argv[2], nullptr, 10)) == 0xFFFFFFFFU ? 1 : 0;
-    }
-  }
-  std::fprintf(stderr, "iecoop_bench_testing_count: no kernel %s (see --list)\n", argv[1]);
-  return 2;
-}
+int main(int argc, char** argv) { return bench::run_count_main(argc, argv, all_kernels, "iecoop_bench_testing_count"); }

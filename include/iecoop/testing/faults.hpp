@@ -38,6 +38,7 @@
 #include <iecoop/fault.hpp>
 #include <iecoop/ostream.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/testing/listener.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -264,20 +265,11 @@ inline void kit_fault_handler(const fault_info& info) {
 
 /// Installs the kit's fault handler for each test case and clears the per-case state: a
 /// doctest listener (registered by <iecoop/testing.hpp>).
-struct kit_listener : doctest::IReporter {
-  explicit kit_listener(const doctest::ContextOptions& /*options*/) {}
-  void report_query(const doctest::QueryData& /*data*/) override {}
-  void test_run_start() override {}
-  void test_run_end(const doctest::TestRunStats& /*stats*/) override {}
+struct kit_listener : quiet_listener {
+  using quiet_listener::quiet_listener;
   void test_case_start(const doctest::TestCaseData& data) override { begin(data); }
   void test_case_reenter(const doctest::TestCaseData& data) override { begin(data); }
   void test_case_end(const doctest::CurrentTestCaseStats& /*stats*/) override { end(); }
-  void test_case_exception(const doctest::TestCaseException& /*data*/) override {}
-  void subcase_start(const doctest::SubcaseSignature& /*signature*/) override {}
-  void subcase_end() override {}
-  void log_assert(const doctest::AssertData& /*data*/) override {}
-  void log_message(const doctest::MessageData& /*data*/) override {}
-  void test_case_skipped(const doctest::TestCaseData& /*data*/) override {}
 
   static void begin(const doctest::TestCaseData& data) noexcept {
     kit.unexpected = 0;

@@ -12,26 +12,17 @@
 #include <cstdio>
 #include <string_view>
 
+#include <iecoop/testing/listener.hpp>
+
 namespace iecoop::testing::detail {
 
 inline int cases_matched = -1;  // test cases that passed the filters; -1: no run was reported
 
-struct count_matches : doctest::IReporter {
-  explicit count_matches(const doctest::ContextOptions& /*options*/) {}
-  void report_query(const doctest::QueryData& /*data*/) override {}
-  void test_run_start() override {}
+struct count_matches : quiet_listener {
+  using quiet_listener::quiet_listener;
   void test_run_end(const doctest::TestRunStats& stats) override {
     cases_matched = static_cast<int>(stats.numTestCasesPassingFilters);
   }
-  void test_case_start(const doctest::TestCaseData& /*data*/) override {}
-  void test_case_reenter(const doctest::TestCaseData& /*data*/) override {}
-  void test_case_end(const doctest::CurrentTestCaseStats& /*stats*/) override {}
-  void test_case_exception(const doctest::TestCaseException& /*data*/) override {}
-  void subcase_start(const doctest::SubcaseSignature& /*signature*/) override {}
-  void subcase_end() override {}
-  void log_assert(const doctest::AssertData& /*data*/) override {}
-  void log_message(const doctest::MessageData& /*data*/) override {}
-  void test_case_skipped(const doctest::TestCaseData& /*data*/) override {}
 };
 
 }  // namespace iecoop::testing::detail
