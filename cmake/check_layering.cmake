@@ -4,7 +4,7 @@
 #   config.hpp, fault.hpp            1  (used by every layer, as are detail/ headers)
 #   types/                           2
 #   pou/                             3
-#   standard/                        4
+#   standard/, sfc/                  4  (sfc/: charts, on the standard blocks' cycle clock)
 #   io/                              5
 #   runtime/                         6
 #   trace/                           7  (recorder, writers, watch list: they observe the runtime)
@@ -22,6 +22,7 @@ get_filename_component(INCLUDE_DIR "${INCLUDE_DIR}" ABSOLUTE)
 set(rank_types 2)
 set(rank_pou 3)
 set(rank_standard 4)
+set(rank_sfc 4)
 set(rank_io 5)
 set(rank_runtime 6)
 set(rank_trace 7)

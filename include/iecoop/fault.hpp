@@ -35,6 +35,7 @@ enum class fault_kind : std::uint8_t {
   array_bounds,          ///< an ARRAY index outside its bounds (CODESYS: CheckBounds)
   out_of_range,          ///< a value outside its subrange type (CODESYS: CheckRangeSigned/Unsigned)
   null_pointer,          ///< a dereferenced null POINTER or invalid REFERENCE (CODESYS: CheckPointer)
+  unsafe_chart,          ///< an SFC transition activated a step that was active already (an unsafe chart)
 };
 
 /// A fault as the handler sees it. `message` points to a string literal; `task` and `pou`
@@ -75,6 +76,7 @@ using fault_handler = void (*)(const fault_info&);
     case fault_kind::array_bounds: return "array index out of bounds";
     case fault_kind::out_of_range: return "value out of subrange";
     case fault_kind::null_pointer: return "null pointer dereferenced";
+    case fault_kind::unsafe_chart: return "unsafe SFC chart";
   }
   return "unknown fault";
 }

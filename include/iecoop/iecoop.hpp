@@ -55,6 +55,11 @@
 #include <iecoop/standard/time_functions.hpp>
 #include <iecoop/standard/timers.hpp>
 
+// sfc/: Sequential Function Charts, the language of steps and transitions (6.7)
+#include <iecoop/sfc/chart.hpp>
+#include <iecoop/sfc/elements.hpp>
+#include <iecoop/sfc/step.hpp>
+
 // io/: direct addresses, the process image, located variables, I/O drivers (6.5.5)
 #include <iecoop/io/address.hpp>
 #include <iecoop/io/driver.hpp>

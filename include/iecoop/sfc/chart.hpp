@@ -1,0 +1,920 @@
+// SPDX-License-Identifier: MIT
+// iecoop/sfc/chart.hpp — a Sequential Function Chart: the body of a POU written in SFC.
+//
+//     struct P_SFC_LINEAR : program<P_SFC_LINEAR> {
+//       BOOL START; INT C_FILL;
+//       sfc::step INIT, FILL, PULSE;
+//       void A_FILL() { C_FILL = C_FILL + 1; }                  // ACTION A_FILL
+//       using P = P_SFC_LINEAR;
+//       sfc::chart<P,
+//         sfc::INITIAL_STEP<&P::INIT>,                          // INITIAL_STEP INIT: END_STEP
+//         sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::START>,
+//         sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>,              // STEP FILL: A_FILL(N); END_STEP
+//         sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::PULSE>,
+//                         [](auto& p) { return p.FILL.T >= T#50ms; }>,
+//         sfc::STEP<&P::PULSE>,
+//         sfc::TRANSITION<sfc::FROM<&P::PULSE>, sfc::TO<&P::INIT>, true>> chart;
+//       void body() { chart(*this); }                           // one scan of the chart
+//     };
+//
+// The structure is checked when the chart is compiled (one initial step, every step reached and
+// left, transitions between the chart's steps, no step twice); the state is a few bytes per step
+// and action inside the chart object, no heap. docs/sfc.md describes both scan orders.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include <iecoop/config.hpp>
+#include <iecoop/detail/meta.hpp>
+#include <iecoop/detail/reflect.hpp>
+#include <iecoop/detail/type_hash.hpp>
+#include <iecoop/fault.hpp>
+#include <iecoop/pou/variables.hpp>
+#include <iecoop/sfc/elements.hpp>
+#include <iecoop/sfc/step.hpp>
+#include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/types/elementary.hpp>
+#include <iecoop/types/string.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop::sfc {
+
+namespace detail {
+
+using iecoop::detail::type_list;
+
+struct engine_access {
+  template <class T, class O>
+  static constexpr T& ref(read_only<T, O>& variable) noexcept {
+    return iecoop::detail::read_only_access::ref(variable);
+  }
+};
+
+// --- The element lists ----------------------------------------------------------------------
+
+template <element_kind K, class List>
+struct only;
+template <element_kind K>
+struct only<K, type_list<>> {
+  using type = type_list<>;
+};
+template <element_kind K, class E, class... Es>
+struct only<K, type_list<E, Es...>> {
+  using rest = typename only<K, type_list<Es...>>::type;
+  using type = std::conditional_t<E::iecoop_sfc_element == K,
+                                  typename iecoop::detail::concat<type_list<E>, rest>::type, rest>;
+};
+
+template <class T>
+concept chart_element = requires {
+  { T::iecoop_sfc_element } -> std::convertible_to<element_kind>;
+} && (T::iecoop_sfc_element == element_kind::step || T::iecoop_sfc_element == element_kind::transition);
+
+template <class... Es>
+struct split_order {
+  using order = codesys;
+  using elements = type_list<Es...>;
+};
+template <ScanOrder O, class... Es>
+struct split_order<O, Es...> {
+  using order = O;
+  using elements = type_list<Es...>;
+};
+
+template <std::size_t I, class List>
+struct at;
+template <std::size_t I, class E, class... Es>
+struct at<I, type_list<E, Es...>> : at<I - 1, type_list<Es...>> {};
+template <class E, class... Es>
+struct at<0, type_list<E, Es...>> {
+  using type = E;
+};
+template <std::size_t I, class List>
+using at_t = typename at<I, List>::type;
+
+template <class List>
+struct length;
+template <class... Es>
+struct length<type_list<Es...>> : std::integral_constant<std::size_t, sizeof...(Es)> {};
+
+/// One action, whatever the steps that name it.
+template <auto A>
+struct action_tag {
+  static constexpr auto value = A;
+};
+
+template <class Steps>
+struct actions_of;
+template <class... Steps>
+struct actions_of<type_list<Steps...>> {
+  template <class Items>
+  struct named;
+  template <class... Items>
+  struct named<type_list<Items...>> {
+    using type = typename iecoop::detail::concat<
+        std::conditional_t<Items::iecoop_sfc_element == element_kind::association, type_list<action_tag<Items::action>>,
+                           type_list<>>...>::type;
+  };
+  template <class List>
+  struct unique;
+  template <class... Tags>
+  struct unique<type_list<Tags...>> {
+    using type = typename iecoop::detail::push_all<type_list<>, Tags...>::type;
+  };
+  using type = typename unique<typename iecoop::detail::concat<typename named<typename Steps::items>::type...>::type>::type;
+};
+
+// --- Calling the POU's members ------------------------------------------------------------
+
+template <class M>
+struct bool_member : std::false_type {};
+template <class C>
+struct bool_member<BOOL C::*> : std::true_type {};
+
+/// Whether `Action` can be an action of POU: a member function without parameters, or a BOOL.
+template <class POU, auto Action>
+inline constexpr bool valid_action =
+    bool_member<decltype(Action)>::value ||
+    (std::is_member_function_pointer_v<decltype(Action)> && std::is_invocable_v<decltype(Action), POU&>);
+
+template <class POU, auto Condition>
+consteval bool valid_condition() noexcept {
+  using C = decltype(Condition);
+  if constexpr (std::is_same_v<C, bool>) {
+    return true;
+  } else if constexpr (std::is_member_object_pointer_v<C>) {
+    return std::is_constructible_v<bool, std::invoke_result_t<C, POU&>>;
+  } else if constexpr (std::is_invocable_v<C, POU&>) {
+    return std::is_constructible_v<bool, std::invoke_result_t<C, POU&>>;
+  } else {
+    return false;
+  }
+}
+
+template <auto Condition, class POU>
+bool test(POU& pou) {
+  using C = decltype(Condition);
+  if constexpr (std::is_same_v<C, bool>) {
+    return Condition;
+  } else if constexpr (std::is_member_object_pointer_v<C>) {
+    return static_cast<bool>(pou.*Condition);
+  } else if constexpr (std::is_member_function_pointer_v<C>) {
+    return static_cast<bool>((pou.*Condition)());
+  } else {
+    return static_cast<bool>(Condition(pou));
+  }
+}
+
+template <auto Action, class POU>
+void call(POU& pou) {
+  (pou.*Action)();
+}
+
+// --- Structural checks (each names the offending step in its template argument) -------------
+
+template <auto Step>
+consteval void step_declared_twice() {
+  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
+                "iecoop: an SFC step is declared twice (the step in the template argument); declare each STEP once");
+}
+template <auto Step>
+consteval void step_not_in_chart() {
+  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
+                "iecoop: a TRANSITION names a step that is no STEP of the chart (the step in the template argument); "
+                "add sfc::STEP<&P::step> or fix the name");
+}
+template <auto Step>
+consteval void step_never_left() {
+  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
+                "iecoop: no TRANSITION leaves the step in the template argument; add one FROM it, or mark it "
+                "sfc::final_step");
+}
+template <auto Step>
+consteval void step_unreachable() {
+  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
+                "iecoop: the step in the template argument cannot be reached from the initial step; add a TRANSITION "
+                "TO it or remove it");
+}
+template <auto Action>
+consteval void invalid_action() {
+  static_assert(iecoop::detail::dependent_false<action_tag<Action>>,
+                "iecoop: an SFC action is a member function of the POU without parameters (an ACTION) or a BOOL member "
+                "(the action in the template argument is neither)");
+}
+template <auto Condition>
+consteval void invalid_condition() {
+  static_assert(iecoop::detail::dependent_false<action_tag<Condition>>,
+                "iecoop: a TRANSITION's condition is a BOOL member, a member function returning BOOL, a callable "
+                "taking the POU (`[](auto& p) { return p.GO; }`) or true");
+}
+
+inline constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+// Per-step state bits.
+inline constexpr std::uint8_t bit_enter = 1;        // activated for the next cycle (codesys) / pending (reset)
+inline constexpr std::uint8_t bit_leave = 2;        // deactivated for the next cycle (codesys) / in this scan
+inline constexpr std::uint8_t bit_activated = 4;    // activated: this scan's actions see it
+inline constexpr std::uint8_t bit_deactivated = 8;  // deactivated: this scan's actions see it
+
+/// The control of one IEC action (IEC 61131-3 ACTION_CONTROL, combined over its associations).
+struct control {
+  bool q = false;       // Q of the last scan
+  bool s = false;       // S stored
+  bool sd = false;      // SD stored (its delay running since sd_et = 0)
+  bool ds = false;      // DS stored
+  bool sl = false;      // SL stored (its limit running since sl_et = 0)
+  TIME sd_et{};
+  TIME sl_et{};
+  TIME sd_pt{};
+  TIME sl_pt{};
+};
+
+}  // namespace detail
+
+/**
+ * A Sequential Function Chart over the POU `POU`, of the Elements (STEPs, TRANSITIONs), in the
+ * scan order given first (sfc::codesys, the default, or sfc::matiec). Declare it as a member of
+ * the POU after the steps and call it from the body: `void body() { chart(*this); }`.
+ *
+ * The SFC flags of CODESYS are its members: the POU writes SFCInit, SFCReset, SFCPause,
+ * SFCEnableLimit (TRUE: as if not declared in CODESYS), SFCQuitError, SFCTip, SFCTipMode and
+ * may reset SFCError; the chart writes SFCError, SFCErrorStep, SFCErrorPOU, SFCCurrentStep and
+ * SFCTrans.
+ */
+template <class POU, class... Elements>
+class chart {
+  using split = detail::split_order<Elements...>;
+  using all = typename split::elements;
+
+  template <class E>
+  static constexpr bool is_element = detail::chart_element<E>;
+
+ public:
+  /// The scan order.
+  using order = typename split::order;
+
+ private:
+  static_assert([]<class... Es>(detail::type_list<Es...>) { return (detail::chart_element<Es> && ...); }(all{}),
+                "iecoop: a chart holds STEP<>, INITIAL_STEP<> and TRANSITION<> elements, after an optional scan order "
+                "(sfc::codesys or sfc::matiec) first");
+
+  using steps = typename detail::only<detail::element_kind::step, all>::type;
+  using transitions = typename detail::only<detail::element_kind::transition, all>::type;
+  using actions = typename detail::actions_of<steps>::type;
+
+  static constexpr std::size_t step_count = detail::length<steps>::value;
+  static constexpr std::size_t transition_count = detail::length<transitions>::value;
+  static constexpr std::size_t action_count = detail::length<actions>::value;
+
+  static_assert(step_count > 0, "iecoop: an SFC chart needs steps; declare an sfc::INITIAL_STEP<> and its STEP<>s");
+
+  template <std::size_t I>
+  using step_at = detail::at_t<I, steps>;
+  template <std::size_t I>
+  using transition_at = detail::at_t<I, transitions>;
+  template <std::size_t I>
+  static constexpr auto action_at = detail::at_t<I, actions>::value;
+
+  static constexpr std::size_t initial_count = []<class... S>(detail::type_list<S...>) {
+    return (std::size_t{S::initial} + ...);
+  }(steps{});
+  static_assert(initial_count != 0,
+                "iecoop: an SFC chart has exactly one INITIAL_STEP; declare its first step as sfc::INITIAL_STEP<>");
+  static_assert(initial_count <= 1,
+                "iecoop: an SFC chart has exactly one INITIAL_STEP; declare the others as sfc::STEP<>");
+
+  using member = sfc::step POU::*;
+  static constexpr std::array<member, step_count> members = []<class... S>(detail::type_list<S...>) {
+    return std::array<member, step_count>{static_cast<member>(S::member)...};
+  }(steps{});
+
+  static constexpr std::size_t initial_index = [] {
+    std::size_t i = 0;
+    [&]<class... S>(detail::type_list<S...>) {
+      std::size_t k = 0;
+      ((S::initial ? (i = k, ++k) : ++k), ...);
+    }(steps{});
+    return i;
+  }();
+
+  static constexpr std::size_t index_of(member m) noexcept {
+    for (std::size_t i = 0; i < step_count; ++i) {
+      if (members[i] == m) return i;
+    }
+    return detail::npos;
+  }
+
+  // The step list, checked: no step twice.
+  template <std::size_t I>
+  static consteval bool check_step() {
+    if constexpr (index_of(members[I]) != I) {
+      detail::step_declared_twice<step_at<I>::member>();
+      return false;
+    }
+    return true;
+  }
+
+  template <class Tr>
+  struct ends {
+    template <class List>
+    struct indices;
+    template <auto... S>
+    struct indices<FROM<S...>> {
+      static constexpr std::array<std::size_t, sizeof...(S)> value{index_of(static_cast<member>(S))...};
+      static constexpr std::array<member, sizeof...(S)> named{static_cast<member>(S)...};
+    };
+    template <auto... S>
+    struct indices<TO<S...>> {
+      static constexpr std::array<std::size_t, sizeof...(S)> value{index_of(static_cast<member>(S))...};
+      static constexpr std::array<member, sizeof...(S)> named{static_cast<member>(S)...};
+    };
+    static constexpr auto from = indices<typename Tr::from>::value;
+    static constexpr auto to = indices<typename Tr::to>::value;
+  };
+
+  template <class Tr>
+  static consteval bool check_transition() {
+    if constexpr (!detail::valid_condition<POU, Tr::condition>()) detail::invalid_condition<Tr::condition>();
+    check_ends(static_cast<typename Tr::from*>(nullptr));
+    check_ends(static_cast<typename Tr::to*>(nullptr));
+    return true;
+  }
+  template <template <auto...> class E, auto... S>
+  static consteval void check_ends(E<S...>*) {
+    (check_one_end<S>(), ...);
+  }
+  template <auto S>
+  static consteval void check_one_end() {
+    if constexpr (index_of(static_cast<member>(S)) == detail::npos) detail::step_not_in_chart<S>();
+  }
+
+  template <auto A>
+  static consteval bool check_action() {
+    if constexpr (!detail::valid_action<POU, A>) detail::invalid_action<A>();
+    return true;
+  }
+
+  // Which steps a transition leaves and reaches; reachability from the initial step.
+  static constexpr std::array<bool, step_count> left = [] {
+    std::array<bool, step_count> result{};
+    [&]<class... Tr>(detail::type_list<Tr...>) {
+      (
+          [&] {
+            for (const std::size_t s : ends<Tr>::from) {
+              if (s != detail::npos) result[s] = true;
+            }
+          }(),
+          ...);
+    }(transitions{});
+    return result;
+  }();
+  static constexpr std::array<bool, step_count> reached = [] {
+    std::array<bool, step_count> result{};
+    result[initial_index] = true;
+    for (std::size_t round = 0; round < step_count; ++round) {
+      [&]<class... Tr>(detail::type_list<Tr...>) {
+        (
+            [&] {
+              bool any = false;
+              for (const std::size_t s : ends<Tr>::from) any = any || (s != detail::npos && result[s]);
+              if (!any) return;
+              for (const std::size_t s : ends<Tr>::to) {
+                if (s != detail::npos) result[s] = true;
+              }
+            }(),
+            ...);
+      }(transitions{});
+    }
+    return result;
+  }();
+
+  template <std::size_t I>
+  static consteval bool check_step_links() {
+    using S = step_at<I>;
+    constexpr bool final = []<class... It>(detail::type_list<It...>) {
+      return ((It::iecoop_sfc_element == detail::element_kind::final_mark) || ...);
+    }(typename S::items{});
+    if constexpr (!left[I] && !final) detail::step_never_left<S::member>();
+    if constexpr (!reached[I]) detail::step_unreachable<S::member>();
+    return true;
+  }
+
+  static constexpr bool checked = [] {
+    bool ok = true;
+    [&]<std::size_t... I>(std::index_sequence<I...>) { ((ok = check_step<I>() && ok), ...); }(
+        std::make_index_sequence<step_count>{});
+    [&]<class... Tr>(detail::type_list<Tr...>) { ((ok = check_transition<Tr>() && ok), ...); }(transitions{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) { ((ok = check_action<action_at<I>>() && ok), ...); }(
+        std::make_index_sequence<action_count>{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) { ((ok = check_step_links<I>() && ok), ...); }(
+        std::make_index_sequence<step_count>{});
+    return ok;
+  }();
+
+  // The order in which the transitions are tested: by priority, then as declared.
+  static constexpr std::array<std::size_t, transition_count> transition_order = [] {
+    std::array<std::size_t, transition_count> result{};
+    std::array<int, transition_count> priority{};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((result[I] = I, priority[I] = transition_at<I>::priority), ...);
+    }(std::make_index_sequence<transition_count>{});
+    for (std::size_t i = 1; i < transition_count; ++i) {  // stable insertion sort
+      for (std::size_t j = i; j > 0 && priority[result[j]] < priority[result[j - 1]]; --j) {
+        std::swap(result[j], result[j - 1]);
+      }
+    }
+    return result;
+  }();
+
+  // The names.
+  template <std::size_t I>
+  static constexpr std::string_view step_name = iecoop::member_name<step_at<I>::member>;
+  template <std::size_t I>
+  static constexpr std::string_view action_name =
+      iecoop::detail::name_in_signature(iecoop::detail::signature_of<action_at<I>>());
+
+  // The order in which the actions run: alphabetical in CODESYS, as associated in matiec.
+  static constexpr std::array<std::size_t, action_count> action_order = [] {
+    std::array<std::size_t, action_count> result{};
+    std::array<std::string_view, action_count> names{};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((result[I] = I, names[I] = action_name<I>), ...);
+    }(std::make_index_sequence<action_count>{});
+    if constexpr (order::actions_first) {
+      for (std::size_t i = 1; i < action_count; ++i) {
+        for (std::size_t j = i; j > 0 && names[result[j]] < names[result[j - 1]]; --j) {
+          std::swap(result[j], result[j - 1]);
+        }
+      }
+    }
+    return result;
+  }();
+
+ public:
+  // --- SFC flags (CODESYS) ---------------------------------------------------------------
+  BOOL SFCInit;                     ///< while TRUE: reset to the initial step, no actions run
+  BOOL SFCReset;                    ///< while TRUE: reset to the initial step, then the scan goes on
+  BOOL SFCPause;                    ///< while TRUE: the chart holds (nothing runs, times stand still)
+  BOOL SFCError;                    ///< a step exceeded its max_time; a later timeout waits until reset
+  BOOL SFCEnableLimit{TRUE};        ///< FALSE: maximum times are not checked
+  BOOL SFCQuitError;                ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
+                                    ///< active steps' times restart
+  BOOL SFCTip;                      ///< in tip mode, a rising edge fires the enabled transitions
+  BOOL SFCTipMode;                  ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
+  read_only<BOOL, chart> SFCTrans;  ///< a transition fired in this scan
+  read_only<STRING<>, chart> SFCErrorStep;    ///< the step that set SFCError
+  read_only<STRING<>, chart> SFCErrorPOU;     ///< the POU of that step
+  read_only<STRING<>, chart> SFCCurrentStep;  ///< the active step (of several: the last declared)
+
+  chart() noexcept { static_assert(checked); }
+
+  /// One scan of the chart on `pou` (the POU the chart is a member of), at the cycle clock's time.
+  void operator()(POU& pou) {
+    static_assert(checked);
+    const TIME now = cycle_clock::now_as<TIME>();
+    const TIME elapsed = started_ ? TIME(now - last_) : TIME{};
+    last_ = now;
+    if (!started_ || SFCInit || SFCReset) {
+      restart(pou);
+      if (SFCInit) return;
+    }
+    if (SFCQuitError) {
+      SFCError = FALSE;
+      text(SFCErrorStep, "");
+      text(SFCErrorPOU, "");
+      quit_held_ = true;
+      return;
+    }
+    if (quit_held_) {
+      quit_held_ = false;
+      restart_active_times(pou);
+    }
+    if (SFCPause) return;
+    const bool tip = SFCTip && !tip_previous_;
+    tip_previous_ = SFCTip;
+    SFCTrans = FALSE;
+    if constexpr (order::actions_first) {
+      enter_codesys(pou, elapsed);
+      step_actions(pou);
+      iec_actions(pou, elapsed);
+      fire(pou, tip);
+    } else {
+      enter_matiec(pou, elapsed);
+      fire(pou, tip);
+      apply_matiec(pou);
+      step_actions(pou);
+      iec_actions(pou, elapsed);
+    }
+    if (SFCTrans) current_step(pou);
+  }
+
+  /// The control of an IEC action of the chart: `chart.action<&P::A_FILL>().Q`.
+  template <auto Action>
+  [[nodiscard]] const action_state& action() const noexcept {
+    constexpr std::size_t index = action_index<Action>();
+    static_assert(index != detail::npos, "iecoop: this action is not associated with any step of the chart");
+    return states_[index];
+  }
+
+  /// The chart's steps, as declared: members of the POU (`pou.*chart.step_members()[0]`).
+  [[nodiscard]] static constexpr std::array<sfc::step POU::*, step_count> step_members() noexcept { return members; }
+
+  /// The names of the chart's steps, as declared.
+  [[nodiscard]] static constexpr std::array<std::string_view, step_count> step_names() noexcept {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
+      return std::array<std::string_view, step_count>{step_name<I>...};
+    }(std::make_index_sequence<step_count>{});
+  }
+
+ private:
+  template <auto Action>
+  static consteval std::size_t action_index() {
+    std::size_t result = detail::npos;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((std::is_same_v<detail::action_tag<Action>, detail::at_t<I, actions>> ? (result = I) : 0), ...);
+    }(std::make_index_sequence<action_count>{});
+    return result;
+  }
+
+  template <std::size_t I>
+  static sfc::step& step_of(POU& pou) noexcept {
+    return pou.*(members[I]);
+  }
+  template <std::size_t I>
+  static BOOL& X(POU& pou) noexcept {
+    return detail::engine_access::ref(step_of<I>(pou).X);
+  }
+  template <std::size_t I>
+  static TIME& T(POU& pou) noexcept {
+    return detail::engine_access::ref(step_of<I>(pou).T);
+  }
+#pragma push_macro("_X")
+#undef _X
+  template <std::size_t I>
+  static BOOL& X_next(POU& pou) noexcept {
+    return detail::engine_access::ref(step_of<I>(pou)._X);
+  }
+#pragma pop_macro("_X")
+
+  template <class F>
+  static void each_step(F&& f) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (f(std::integral_constant<std::size_t, I>{}), ...);
+    }(std::make_index_sequence<step_count>{});
+  }
+
+  // --- Reset ------------------------------------------------------------------------------
+  void restart(POU& pou) {
+    started_ = true;
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      const bool initial = I == initial_index;
+      X<I>(pou) = BOOL(initial);
+      X_next<I>(pou) = BOOL(initial);
+      T<I>(pou) = TIME{};
+      flags_[I] = initial ? detail::bit_enter : 0;
+    });
+    for (std::size_t a = 0; a < action_count; ++a) {
+      controls_[a] = detail::control{};
+      detail::engine_access::ref(states_[a].Q) = FALSE;
+      detail::engine_access::ref(states_[a].A) = FALSE;
+    }
+    [&]<std::size_t... A>(std::index_sequence<A...>) {
+      ((detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value ? void(set_variable<action_at<A>>(pou, false)) : void()),
+       ...);
+    }(std::make_index_sequence<action_count>{});
+    SFCError = FALSE;
+    text(SFCErrorStep, "");
+    text(SFCErrorPOU, "");
+    SFCTrans = FALSE;
+    quit_held_ = false;
+    text(SFCCurrentStep, step_name<initial_index>);
+  }
+
+  static void text(read_only<STRING<>, chart>& variable, std::string_view value) noexcept {
+    detail::engine_access::ref(variable).assign(value);
+  }
+
+  template <auto Variable>
+  static void set_variable(POU& pou, bool value) {
+    if constexpr (detail::bool_member<std::remove_cv_t<decltype(Variable)>>::value) pou.*Variable = BOOL(value);
+  }
+
+  void restart_active_times(POU& pou) {
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      if (X<I>(pou)) T<I>(pou) = TIME{};
+    });
+  }
+
+  // --- Step evolution ---------------------------------------------------------------------
+  // codesys: the steps the last scan's transitions activated and deactivated take effect now.
+  void enter_codesys(POU& pou, TIME elapsed) {
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      const std::uint8_t f = flags_[I];
+      const bool active = X_next<I>(pou);
+      X<I>(pou) = BOOL(active);
+      if (f & detail::bit_enter) {
+        T<I>(pou) = TIME{};
+      } else if (active) {
+        T<I>(pou) = T<I>(pou) + elapsed;
+      }
+      flags_[I] = static_cast<std::uint8_t>(((f & detail::bit_enter) ? detail::bit_activated : 0) |
+                                            ((f & detail::bit_leave) ? detail::bit_deactivated : 0));
+    });
+  }
+
+  // matiec: the active steps' times advance; a pending activation (the initial step after a
+  // reset) is seen by this scan's actions.
+  void enter_matiec(POU& pou, TIME elapsed) {
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      const std::uint8_t f = flags_[I];
+      if (X<I>(pou) && !(f & detail::bit_enter)) T<I>(pou) = T<I>(pou) + elapsed;
+      flags_[I] = (f & detail::bit_enter) ? detail::bit_activated : 0;
+    });
+  }
+
+  void apply_matiec(POU& pou) {
+    if (!SFCTrans) return;
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      std::uint8_t f = flags_[I];
+      if (f & detail::bit_leave) {
+        X<I>(pou) = FALSE;
+        f |= detail::bit_deactivated;
+      }
+      if (f & detail::bit_enter) {
+        X<I>(pou) = TRUE;
+        T<I>(pou) = TIME{};
+        f |= detail::bit_activated;
+      }
+      flags_[I] = static_cast<std::uint8_t>(f & ~(detail::bit_enter | detail::bit_leave));
+      X_next<I>(pou) = X<I>(pou);
+    });
+  }
+
+  // --- Transitions ------------------------------------------------------------------------
+  void fire(POU& pou, bool tip) {
+    if (SFCTipMode && !tip) return;
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (try_fire<transition_order[K]>(pou, tip), ...);
+    }(std::make_index_sequence<transition_count>{});
+  }
+
+  template <std::size_t Tr>
+  void try_fire(POU& pou, bool tip) {
+    using E = ends<transition_at<Tr>>;
+    // Enabled: every source step active (at the start of the scan) and not left by a
+    // transition tested before this one; each source's minimum time reached.
+    const bool enabled = [&]<std::size_t... F>(std::index_sequence<F...>) {
+      return ((X<E::from[F]>(pou) && !(flags_[E::from[F]] & detail::bit_leave) && min_time_reached<E::from[F]>(pou)) &&
+              ...);
+    }(std::make_index_sequence<E::from.size()>{});
+    if (!enabled) return;
+    if (!SFCTipMode || !tip) {
+      if (!detail::test<transition_at<Tr>::condition>(pou)) return;
+    }
+    SFCTrans = TRUE;
+    [&]<std::size_t... F>(std::index_sequence<F...>) {
+      ((flags_[E::from[F]] |= detail::bit_leave), ...);
+      if constexpr (order::actions_first) ((X_next<E::from[F]>(pou) = FALSE), ...);
+    }(std::make_index_sequence<E::from.size()>{});
+    [&]<std::size_t... G>(std::index_sequence<G...>) { (activate<E::to[G]>(pou), ...); }(
+        std::make_index_sequence<E::to.size()>{});
+  }
+
+  template <std::size_t I>
+  void activate(POU& pou) {
+    std::uint8_t& f = flags_[I];
+    // Unsafe: the step is active and stays so (no firing transition leaves it), or two
+    // transitions activate it in one scan.
+    if ((f & detail::bit_enter) || (X<I>(pou) && !(f & detail::bit_leave))) {
+      fault(fault_kind::unsafe_chart,
+            "an SFC transition activated a step that is active already (alternative branches that both lead into "
+            "one sequence); the step stays active once");
+    }
+    f |= detail::bit_enter;
+    if constexpr (order::actions_first) X_next<I>(pou) = TRUE;
+  }
+
+  template <std::size_t I>
+  bool min_time_reached(POU& pou) const {
+    constexpr TIME limit = time_limit_of<I, false>();
+    if constexpr (limit == TIME{}) {
+      return true;
+    } else {
+      return T<I>(pou) >= limit;
+    }
+  }
+
+  template <std::size_t I, bool Maximum>
+  static consteval TIME time_limit_of() {
+    TIME result{};
+    []<class... It>(detail::type_list<It...>, TIME& r) {
+      (
+          [&] {
+            if constexpr (It::iecoop_sfc_element == detail::element_kind::time_limit) {
+              if constexpr (It::maximum == Maximum) r = It::limit;
+            }
+          }(),
+          ...);
+    }(typename step_at<I>::items{}, result);
+    return result;
+  }
+
+  void current_step(POU& pou) {
+    std::string_view name = step_name<initial_index>;
+    bool any = false;
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      if (X_next<I>(pou)) {
+        name = step_name<I>;
+        any = true;
+      }
+    });
+    if (any) text(SFCCurrentStep, name);
+  }
+
+  // --- CODESYS step actions and time checks ----------------------------------------------
+  void step_actions(POU& pou) {
+    each_step([&](auto i) { step_actions_of<decltype(i)::value, detail::step_action_kind::exit>(pou); });
+    each_step([&](auto i) { step_actions_of<decltype(i)::value, detail::step_action_kind::entry>(pou); });
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      constexpr TIME maximum = time_limit_of<I, true>();
+      if constexpr (maximum != TIME{}) {
+        if (X<I>(pou) && T<I>(pou) > maximum && SFCEnableLimit && !SFCError) {
+          SFCError = TRUE;
+          text(SFCErrorStep, step_name<I>);
+          text(SFCErrorPOU, iecoop::detail::short_type_name<POU>());
+        }
+      }
+      step_actions_of<I, detail::step_action_kind::active>(pou);
+    });
+  }
+
+  template <std::size_t I, detail::step_action_kind K>
+  void step_actions_of(POU& pou) {
+    [&]<class... It>(detail::type_list<It...>) {
+      (
+          [&] {
+            if constexpr (It::iecoop_sfc_element == detail::element_kind::step_action) {
+              if constexpr (It::kind == K) {
+                bool run = false;
+                if constexpr (K == detail::step_action_kind::entry) run = (flags_[I] & detail::bit_activated) != 0;
+                if constexpr (K == detail::step_action_kind::exit) run = (flags_[I] & detail::bit_deactivated) != 0;
+                if constexpr (K == detail::step_action_kind::active) run = X<I>(pou);
+                if (run) (pou.*It::action)();
+              }
+            }
+          }(),
+          ...);
+    }(typename step_at<I>::items{});
+  }
+
+  // --- IEC actions ------------------------------------------------------------------------
+  struct inputs {
+    bool n = false, r = false, p = false, p0 = false, s = false, l = false, d = false;
+    bool sd = false, ds = false, sl = false;
+    TIME sd_pt{}, sl_pt{};
+  };
+
+  // The inputs of action A's control: its associations, combined with OR.
+  template <std::size_t A>
+  inputs gather(POU& pou) const {
+    inputs in;
+    each_step([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      [&]<class... It>(detail::type_list<It...>) {
+        (
+            [&] {
+              if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
+                  gather_one<I, It>(pou, in);
+                }
+              }
+            }(),
+            ...);
+      }(typename step_at<I>::items{});
+    });
+    return in;
+  }
+
+  template <std::size_t I, class As>
+  void gather_one(POU& pou, inputs& in) const {
+    const std::uint8_t f = flags_[I];
+    constexpr qualifier q = As::kind;
+    if constexpr (q == qualifier::P || q == qualifier::P1) {
+      in.p = in.p || (f & detail::bit_activated);
+    } else if constexpr (q == qualifier::P0) {
+      in.p0 = in.p0 || (f & detail::bit_deactivated);
+    } else {
+      const bool x = X<I>(pou);
+      if (!x) return;
+      if constexpr (q == qualifier::N) in.n = true;
+      if constexpr (q == qualifier::R) in.r = true;
+      if constexpr (q == qualifier::S) in.s = true;
+      if constexpr (q == qualifier::L) in.l = in.l || T<I>(pou) < As::duration;
+      if constexpr (q == qualifier::D) in.d = in.d || T<I>(pou) >= As::duration;
+      if constexpr (q == qualifier::DS) in.ds = in.ds || T<I>(pou) >= As::duration;
+      if constexpr (q == qualifier::SD) {
+        in.sd = true;
+        in.sd_pt = As::duration;
+      }
+      if constexpr (q == qualifier::SL) {
+        in.sl = true;
+        in.sl_pt = As::duration;
+      }
+    }
+  }
+
+  // IEC's ACTION_CONTROL for action A: returns Q.
+  template <std::size_t A>
+  bool control(POU& pou, TIME elapsed) {
+    const inputs in = gather<A>(pou);
+    detail::control& c = controls_[A];
+    // The running delays and limits advance first; then the sets; then R, which wins.
+    if (c.sd) c.sd_et = c.sd_et + elapsed;
+    if (c.sl) c.sl_et = c.sl_et + elapsed;
+    if (in.s) c.s = true;
+    if (in.sd && !c.sd) {
+      c.sd = true;
+      c.sd_et = TIME{};
+      c.sd_pt = in.sd_pt;
+    }
+    if (in.sl && !c.sl) {
+      c.sl = true;
+      c.sl_et = TIME{};
+      c.sl_pt = in.sl_pt;
+    }
+    if (in.ds) c.ds = true;
+    if (in.r) {
+      c.s = c.sd = c.ds = c.sl = false;
+      return false;
+    }
+    return in.n || in.p || in.p0 || in.l || in.d || c.s || c.ds || (c.sd && c.sd_et >= c.sd_pt) ||
+           (c.sl && c.sl_et < c.sl_pt);
+  }
+
+  void iec_actions(POU& pou, TIME elapsed) {
+    // Every control first, then the bodies: an action body cannot change another's Q mid-scan.
+    std::array<bool, action_count> final_scan{};
+    [&]<std::size_t... A>(std::index_sequence<A...>) {
+      (
+          [&] {
+            const bool q = control<A>(pou, elapsed);
+            detail::control& c = controls_[A];
+            final_scan[A] = order::actions_first && c.q && !q;
+            c.q = q;
+            detail::engine_access::ref(states_[A].Q) = BOOL(q);
+            detail::engine_access::ref(states_[A].A) = BOOL(q || final_scan[A]);
+          }(),
+          ...);
+    }(std::make_index_sequence<action_count>{});
+    if constexpr (order::actions_first) {
+      [&]<std::size_t... K>(std::index_sequence<K...>) {
+        ((final_scan[action_order[K]] ? run<action_order[K]>(pou) : void()), ...);
+      }(std::make_index_sequence<action_count>{});
+    }
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (run_if_active<action_order[K]>(pou), ...);
+    }(std::make_index_sequence<action_count>{});
+  }
+
+  template <std::size_t A>
+  void run_if_active(POU& pou) {
+    constexpr auto action = action_at<A>;
+    if constexpr (detail::bool_member<std::remove_cv_t<decltype(action)>>::value) {
+      pou.*action = BOOL(controls_[A].q);  // a BOOL variable follows Q, without a final scan
+    } else {
+      if (controls_[A].q) (pou.*action)();
+    }
+  }
+
+  template <std::size_t A>
+  void run(POU& pou) {
+    constexpr auto action = action_at<A>;
+    if constexpr (!detail::bool_member<std::remove_cv_t<decltype(action)>>::value) (pou.*action)();
+  }
+
+  std::array<std::uint8_t, step_count> flags_{};
+  std::array<detail::control, action_count> controls_{};
+  std::array<action_state, action_count> states_{};
+  TIME last_{};
+  bool started_ = false;
+  bool quit_held_ = false;
+  bool tip_previous_ = false;
+};
+
+}  // namespace iecoop::sfc
+
+#include <iecoop/detail/pop_macros.hpp>
