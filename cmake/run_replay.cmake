@@ -1,5 +1,6 @@
 # Runs iecoop-replay end to end: TOOL with ARGS (separated by |), STIMULUS on stdin.
 #   EXPECTED=<file>  : must exit 0, print exactly the file's content, and nothing on stderr.
+#   COLUMNS=<file>   : besides, the trace's first line must be exactly the file's (a chart's columns).
 #   EXPECT_ERROR=<re>: must exit 2, print nothing on stdout and one line matching <re> on stderr.
 #   CRLF=ON          : feed the stimulus with CRLF line ends (the trace keeps LF).
 #   CR=ON            : feed it with a CR alone at each line end (classic Mac OS).
@@ -39,6 +40,13 @@ if(DEFINED EXPECTED)
   endif()
   if(NOT output STREQUAL expected)
     message(FATAL_ERROR "trace differs from ${EXPECTED}\n--- expected:\n${expected}--- got:\n${output}")
+  endif()
+  if(DEFINED COLUMNS)
+    file(STRINGS "${COLUMNS}" columns LIMIT_COUNT 1)
+    string(REGEX MATCH "^[^\n]*" header "${output}")
+    if(NOT header STREQUAL columns)
+      message(FATAL_ERROR "the trace's header is not ${COLUMNS}'s line:\n  ${header}\n  ${columns}")
+    endif()
   endif()
 else()
   if(NOT result EQUAL 2)

@@ -1,7 +1,9 @@
-// iecoop-replay: drives one standard function block from a stimulus file and writes the trace
-// of its outputs, for conformance checks against other IEC 61131-3 implementations.
+// iecoop-replay: drives one standard function block, or one of the reference SFC charts, from a
+// stimulus file and writes the trace of its outputs, for conformance checks against other IEC
+// 61131-3 implementations.
 //
 //     iecoop-replay [--dialect NAME] [--prefix NAME] FB < stimulus.csv > trace.csv
+//     iecoop-replay [--dialect codesys|matiec] CHART < CHART.stimulus.csv > trace.csv
 //
 // FB is one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS (counters: their INT variants), in
 // the dialect NAME (codesys, the default; iec; matiec). The stimulus has the header
@@ -13,7 +15,13 @@
 // named P.<input>: a CSV the trace recorder wrote (<iecoop/trace/csv.hpp>) with the block's pins
 // recorded as P replays as it stands. Bad input: one line on stderr naming the row and column,
 // exit status 2, and nothing on stdout.
+//
+// CHART is one of the eight reference charts of examples/sfc (SFC_LINEAR, SFC_PAR, ...), in the
+// scan order NAME: codesys (the default) or matiec (docs/sfc.md). Per row the tool sets the cycle
+// clock, assigns the inputs and runs one scan; the trace has the columns of the chart's .columns
+// file: the inputs, <step>_X and <step>_T_ms for each step, the program's variables, the note.
 #include "replay.hpp"
+#include "sfc_charts.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -31,8 +39,10 @@ constexpr int exit_bad_input = 2;
 
 constexpr std::string_view usage =
     "usage: iecoop-replay [--dialect NAME] [--prefix NAME] FB < stimulus.csv > trace.csv\n"
+    "       iecoop-replay [--dialect codesys|matiec] CHART < stimulus.csv > trace.csv\n"
     "  FB:      TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS (counters: their INT variants)\n"
-    "  --dialect: codesys (default), iec, matiec\n"
+    "  CHART:   SFC_ALT SFC_ALT_PRIO SFC_FIRST_SCAN SFC_LINEAR SFC_PAR SFC_QUAL SFC_SHARED SFC_TIMED\n"
+    "  --dialect: codesys (default), iec, matiec (charts: their scan order, codesys or matiec)\n"
     "  --prefix:  the inputs are the columns NAME.<input> (a recorded trace's, e.g. IO_PRG.tJam)\n"
     "  stimulus: header cycle,time_ms,<inputs...>; BOOL 0/1, INT decimal, TIME as <pin>_ms\n";
 
@@ -85,9 +95,15 @@ int main(int argc, char** argv) {
   if (dialect != codesys::dialect::name && dialect != iec::dialect::name && dialect != matiec::dialect::name) {
     return fail("unknown dialect \"" + dialect + "\"; use codesys, iec or matiec");
   }
-  if (!replay_in<codesys::dialect>(*fb, {}, /*check_name_only=*/true)) {
-    return fail("unknown FB \"" + *fb + "\"; use one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS");
+  const bool is_chart = replay_chart<sfc::codesys>(*fb, {}, /*check_name_only=*/true).has_value();
+  if (!is_chart && !replay_in<codesys::dialect>(*fb, {}, /*check_name_only=*/true)) {
+    return fail("unknown FB \"" + *fb +
+                "\"; use one of TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS, or a chart: " + std::string(chart_names));
   }
+  if (is_chart && dialect == iec::dialect::name) {
+    return fail("a chart's scan order is codesys or matiec, not iec; use --dialect codesys or --dialect matiec");
+  }
+  if (is_chart && !prefix.empty()) return fail("--prefix is for FBs, not for charts");
 
   try {
     std::string stimulus;
@@ -98,7 +114,10 @@ int main(int argc, char** argv) {
     // std::cin reads through stdio (synchronised): a read error there is only ferror(stdin).
     if (std::cin.bad() || std::ferror(stdin) != 0) return fail("could not read the stimulus from standard input");
     std::optional<std::string> trace;
-    if (dialect == codesys::dialect::name) {
+    if (is_chart) {
+      trace = dialect == matiec::dialect::name ? replay_chart<sfc::matiec>(*fb, stimulus)
+                                               : replay_chart<sfc::codesys>(*fb, stimulus);
+    } else if (dialect == codesys::dialect::name) {
       trace = replay_in<codesys::dialect>(*fb, stimulus, false, prefix);
     } else if (dialect == iec::dialect::name) {
       trace = replay_in<iec::dialect>(*fb, stimulus, false, prefix);

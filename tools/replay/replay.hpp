@@ -217,14 +217,13 @@ inline std::string_view unprefixed(std::string_view name, std::string_view prefi
   return name.substr(prefix.size() + 1);
 }
 
-/// Replays `stimulus` on a fresh block B; returns the trace, or throws input_error. With a
+/// Replays `stimulus` on a fresh block B (its `inputs` set from the columns of their names,
+/// its `outputs` written after them); returns the trace, or throws input_error. With a
 /// `prefix`, the inputs are the columns named `<prefix>.<input>` (a trace recorded with
 /// iecoop's trace recorder names a block's pins so) and every other column is copied through.
 template <class B>
-std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_counter, std::string_view prefix = {}) {
-  const std::vector<input_pin<B>> inputs = input_pins<B>(is_counter, std::make_index_sequence<inputs_of<B>::size>{});
-  const std::vector<output_pin<B>> outputs = output_pins<B>(std::make_index_sequence<outputs_of<B>::size>{});
-
+std::string replay_with(std::string_view stimulus, std::string_view fb_name, const std::vector<input_pin<B>>& inputs,
+                        const std::vector<output_pin<B>>& outputs, std::string_view prefix = {}) {
   // A UTF-8 byte order mark (spreadsheets write one) is no part of the header.
   if (stimulus.starts_with("\xEF\xBB\xBF")) stimulus.remove_prefix(3);
   // Lines, without their line breaks (LF, CRLF, or a CR alone); a last line break ends the file.
@@ -348,6 +347,13 @@ std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_
     trace += '\n';
   }
   return trace;
+}
+
+/// replay_with() on block B's VAR_INPUTs and VAR_OUTPUTs.
+template <class B>
+std::string replay(std::string_view stimulus, std::string_view fb_name, bool is_counter, std::string_view prefix = {}) {
+  return replay_with<B>(stimulus, fb_name, input_pins<B>(is_counter, std::make_index_sequence<inputs_of<B>::size>{}),
+                        output_pins<B>(std::make_index_sequence<outputs_of<B>::size>{}), prefix);
 }
 
 /// The blocks the tool drives, in dialect D.

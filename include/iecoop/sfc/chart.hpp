@@ -68,8 +68,8 @@ struct only<K, type_list<>> {
 template <element_kind K, class E, class... Es>
 struct only<K, type_list<E, Es...>> {
   using rest = typename only<K, type_list<Es...>>::type;
-  using type = std::conditional_t<E::iecoop_sfc_element == K,
-                                  typename iecoop::detail::concat<type_list<E>, rest>::type, rest>;
+  using type =
+      std::conditional_t<E::iecoop_sfc_element == K, typename iecoop::detail::concat<type_list<E>, rest>::type, rest>;
 };
 
 template <class T>
@@ -114,13 +114,19 @@ template <class Steps>
 struct actions_of;
 template <class... Steps>
 struct actions_of<type_list<Steps...>> {
+  template <class Item, bool = Item::iecoop_sfc_element == element_kind::association>
+  struct tag_of {
+    using type = type_list<>;
+  };
+  template <class Item>
+  struct tag_of<Item, true> {
+    using type = type_list<action_tag<Item::action>>;
+  };
   template <class Items>
   struct named;
   template <class... Items>
   struct named<type_list<Items...>> {
-    using type = typename iecoop::detail::concat<
-        std::conditional_t<Items::iecoop_sfc_element == element_kind::association, type_list<action_tag<Items::action>>,
-                           type_list<>>...>::type;
+    using type = typename iecoop::detail::concat<type_list<>, typename tag_of<Items>::type...>::type;
   };
   template <class List>
   struct unique;
@@ -128,7 +134,8 @@ struct actions_of<type_list<Steps...>> {
   struct unique<type_list<Tags...>> {
     using type = typename iecoop::detail::push_all<type_list<>, Tags...>::type;
   };
-  using type = typename unique<typename iecoop::detail::concat<typename named<typename Steps::items>::type...>::type>::type;
+  using type =
+      typename unique<typename iecoop::detail::concat<typename named<typename Steps::items>::type...>::type>::type;
 };
 
 // --- Calling the POU's members ------------------------------------------------------------
@@ -225,11 +232,11 @@ inline constexpr std::uint8_t bit_deactivated = 8;  // deactivated: this scan's 
 
 /// The control of one IEC action (IEC 61131-3 ACTION_CONTROL, combined over its associations).
 struct control {
-  bool q = false;       // Q of the last scan
-  bool s = false;       // S stored
-  bool sd = false;      // SD stored (its delay running since sd_et = 0)
-  bool ds = false;      // DS stored
-  bool sl = false;      // SL stored (its limit running since sl_et = 0)
+  bool q = false;   // Q of the last scan
+  bool s = false;   // S stored
+  bool sd = false;  // SD stored (its delay running since sd_et = 0)
+  bool ds = false;  // DS stored
+  bool sl = false;  // SL stored (its limit running since sl_et = 0)
   TIME sd_et{};
   TIME sl_et{};
   TIME sd_pt{};
@@ -408,13 +415,16 @@ class chart {
 
   static constexpr bool checked = [] {
     bool ok = true;
-    [&]<std::size_t... I>(std::index_sequence<I...>) { ((ok = check_step<I>() && ok), ...); }(
-        std::make_index_sequence<step_count>{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((ok = check_step<I>() && ok), ...);
+    }(std::make_index_sequence<step_count>{});
     [&]<class... Tr>(detail::type_list<Tr...>) { ((ok = check_transition<Tr>() && ok), ...); }(transitions{});
-    [&]<std::size_t... I>(std::index_sequence<I...>) { ((ok = check_action<action_at<I>>() && ok), ...); }(
-        std::make_index_sequence<action_count>{});
-    [&]<std::size_t... I>(std::index_sequence<I...>) { ((ok = check_step_links<I>() && ok), ...); }(
-        std::make_index_sequence<step_count>{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((ok = check_action<action_at<I>>() && ok), ...);
+    }(std::make_index_sequence<action_count>{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((ok = check_step_links<I>() && ok), ...);
+    }(std::make_index_sequence<step_count>{});
     return ok;
   }();
 
@@ -459,16 +469,16 @@ class chart {
 
  public:
   // --- SFC flags (CODESYS) ---------------------------------------------------------------
-  BOOL SFCInit;                     ///< while TRUE: reset to the initial step, no actions run
-  BOOL SFCReset;                    ///< while TRUE: reset to the initial step, then the scan goes on
-  BOOL SFCPause;                    ///< while TRUE: the chart holds (nothing runs, times stand still)
-  BOOL SFCError;                    ///< a step exceeded its max_time; a later timeout waits until reset
-  BOOL SFCEnableLimit{TRUE};        ///< FALSE: maximum times are not checked
-  BOOL SFCQuitError;                ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
-                                    ///< active steps' times restart
-  BOOL SFCTip;                      ///< in tip mode, a rising edge fires the enabled transitions
-  BOOL SFCTipMode;                  ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
-  read_only<BOOL, chart> SFCTrans;  ///< a transition fired in this scan
+  BOOL SFCInit;                               ///< while TRUE: reset to the initial step, no actions run
+  BOOL SFCReset;                              ///< while TRUE: reset to the initial step, then the scan goes on
+  BOOL SFCPause;                              ///< while TRUE: the chart holds (nothing runs, times stand still)
+  BOOL SFCError;                              ///< a step exceeded its max_time; a later timeout waits until reset
+  BOOL SFCEnableLimit{TRUE};                  ///< FALSE: maximum times are not checked
+  BOOL SFCQuitError;                          ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
+                                              ///< active steps' times restart
+  BOOL SFCTip;                                ///< in tip mode, a rising edge fires the enabled transitions
+  BOOL SFCTipMode;                            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
+  read_only<BOOL, chart> SFCTrans;            ///< a transition fired in this scan
   read_only<STRING<>, chart> SFCErrorStep;    ///< the step that set SFCError
   read_only<STRING<>, chart> SFCErrorPOU;     ///< the POU of that step
   read_only<STRING<>, chart> SFCCurrentStep;  ///< the active step (of several: the last declared)
@@ -479,7 +489,7 @@ class chart {
   void operator()(POU& pou) {
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
-    const TIME elapsed = started_ ? TIME(now - last_) : TIME{};
+    TIME elapsed = started_ ? TIME(now - last_) : TIME{};
     last_ = now;
     if (!started_ || SFCInit || SFCReset) {
       restart(pou);
@@ -492,9 +502,10 @@ class chart {
       quit_held_ = true;
       return;
     }
-    if (quit_held_) {
+    if (quit_held_) {  // SFCQuitError fell: the active steps' times start again from 0
       quit_held_ = false;
       restart_active_times(pou);
+      elapsed = TIME{};
     }
     if (SFCPause) return;
     const bool tip = SFCTip && !tip_previous_;
@@ -502,17 +513,19 @@ class chart {
     SFCTrans = FALSE;
     if constexpr (order::actions_first) {
       enter_codesys(pou, elapsed);
+      if (changed_) current_step(pou);  // the steps the last cycle's transitions activated are active now
       step_actions(pou);
       iec_actions(pou, elapsed);
       fire(pou, tip);
+      changed_ = SFCTrans;
     } else {
       enter_matiec(pou, elapsed);
       fire(pou, tip);
       apply_matiec(pou);
+      if (SFCTrans) current_step(pou);
       step_actions(pou);
       iec_actions(pou, elapsed);
     }
-    if (SFCTrans) current_step(pou);
   }
 
   /// The control of an IEC action of the chart: `chart.action<&P::A_FILL>().Q`.
@@ -587,7 +600,9 @@ class chart {
       detail::engine_access::ref(states_[a].A) = FALSE;
     }
     [&]<std::size_t... A>(std::index_sequence<A...>) {
-      ((detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value ? void(set_variable<action_at<A>>(pou, false)) : void()),
+      ((detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value
+            ? void(set_variable<action_at<A>>(pou, false))
+            : void()),
        ...);
     }(std::make_index_sequence<action_count>{});
     SFCError = FALSE;
@@ -595,6 +610,7 @@ class chart {
     text(SFCErrorPOU, "");
     SFCTrans = FALSE;
     quit_held_ = false;
+    changed_ = false;
     text(SFCCurrentStep, step_name<initial_index>);
   }
 
@@ -688,8 +704,9 @@ class chart {
       ((flags_[E::from[F]] |= detail::bit_leave), ...);
       if constexpr (order::actions_first) ((X_next<E::from[F]>(pou) = FALSE), ...);
     }(std::make_index_sequence<E::from.size()>{});
-    [&]<std::size_t... G>(std::index_sequence<G...>) { (activate<E::to[G]>(pou), ...); }(
-        std::make_index_sequence<E::to.size()>{});
+    [&]<std::size_t... G>(std::index_sequence<G...>) {
+      (activate<E::to[G]>(pou), ...);
+    }(std::make_index_sequence<E::to.size()>{});
   }
 
   template <std::size_t I>
@@ -736,7 +753,7 @@ class chart {
     bool any = false;
     each_step([&](auto i) {
       constexpr std::size_t I = decltype(i)::value;
-      if (X_next<I>(pou)) {
+      if (X<I>(pou)) {
         name = step_name<I>;
         any = true;
       }
@@ -913,6 +930,7 @@ class chart {
   bool started_ = false;
   bool quit_held_ = false;
   bool tip_previous_ = false;
+  bool changed_ = false;  // codesys: transitions fired in the last cycle (SFCCurrentStep follows)
 };
 
 }  // namespace iecoop::sfc

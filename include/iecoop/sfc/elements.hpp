@@ -162,10 +162,11 @@ struct final_step {
 
 namespace detail {
 template <class T>
-concept step_item = requires {
-  { T::iecoop_sfc_element } -> std::convertible_to<element_kind>;
-} && (T::iecoop_sfc_element == element_kind::association || T::iecoop_sfc_element == element_kind::step_action ||
-      T::iecoop_sfc_element == element_kind::time_limit || T::iecoop_sfc_element == element_kind::final_mark);
+concept step_item =
+    requires {
+      { T::iecoop_sfc_element } -> std::convertible_to<element_kind>;
+    } && (T::iecoop_sfc_element == element_kind::association || T::iecoop_sfc_element == element_kind::step_action ||
+          T::iecoop_sfc_element == element_kind::time_limit || T::iecoop_sfc_element == element_kind::final_mark);
 
 template <class M>
 struct step_member : std::false_type {};

@@ -1,0 +1,28 @@
+// EXPECT: iecoop: an SFC chart has exactly one INITIAL_STEP; declare the others as sfc::STEP
+// EXPECT-WITHIN: 40
+// Two INITIAL_STEPs in one chart.
+#include <iecoop/iecoop.hpp>
+using namespace iecoop;
+struct FB_Chart : function_block<FB_Chart> {
+  BOOL GO;
+  sfc::step INIT, FILL, DRAIN;
+  void A_FILL() {}
+  using P = FB_Chart;
+#ifdef IECOOP_COMPILE_FAIL
+  sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,
+             sfc::INITIAL_STEP<&P::FILL, sfc::N<&P::A_FILL>>,
+             sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, &P::GO>, sfc::STEP<&P::DRAIN>,
+             sfc::TRANSITION<sfc::FROM<&P::DRAIN>, sfc::TO<&P::INIT>, true>>
+      chart;
+#else
+  sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,
+             sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>, sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, &P::GO>,
+             sfc::STEP<&P::DRAIN>, sfc::TRANSITION<sfc::FROM<&P::DRAIN>, sfc::TO<&P::INIT>, true>>
+      chart;
+#endif
+  void body() { chart(*this); }
+};
+int main() {
+  FB_Chart fb;
+  fb();
+}
