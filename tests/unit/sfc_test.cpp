@@ -154,8 +154,8 @@ TEST_SUITE("sfc") {
     CHECK(p.C_P0 == 0);
     CHECK((p.V_N && p.V_S && p.V_P));
     row(4, FALSE);
-    CHECK(p.C_P == 2);  // P's Q fell: its final scan (CODESYS runs a P action twice)
-    CHECK(p.C_P1 == 2);
+    CHECK(p.C_P == 2);   // P's Q fell: its final scan (CODESYS runs a P action twice)
+    CHECK(p.C_P1 == 1);  // P1 runs once: no final scan after a P1 pulse (CODESYS)
     CHECK_FALSE(p.V_P);  // a variable has no final scan
     row(5, FALSE);
     row(6, TRUE);  // S1 -> S2 for cycle 7
@@ -166,7 +166,7 @@ TEST_SUITE("sfc") {
     CHECK(p.V_S);
     CHECK_FALSE(p.V_N);
     row(8, FALSE);
-    CHECK(p.C_P0 == 2);  // P0's final scan
+    CHECK(p.C_P0 == 1);  // P0 runs once too
     row(9, FALSE);
     row(10, TRUE);  // S2 -> S3 for cycle 11: S3 resets A_S and V_S
     row(11, FALSE);

@@ -232,11 +232,12 @@ inline constexpr std::uint8_t bit_deactivated = 8;  // deactivated: this scan's 
 
 /// The control of one IEC action (IEC 61131-3 ACTION_CONTROL, combined over its associations).
 struct control {
-  bool q = false;   // Q of the last scan
-  bool s = false;   // S stored
-  bool sd = false;  // SD stored (its delay running since sd_et = 0)
-  bool ds = false;  // DS stored
-  bool sl = false;  // SL stored (its limit running since sl_et = 0)
+  bool q = false;      // Q of the last scan
+  bool pulse = false;  // ... driven only by P1 or P0 (CODESYS runs those once: no final scan)
+  bool s = false;      // S stored
+  bool sd = false;     // SD stored (its delay running since sd_et = 0)
+  bool ds = false;     // DS stored
+  bool sl = false;     // SL stored (its limit running since sl_et = 0)
   TIME sd_et{};
   TIME sl_et{};
   TIME sd_pt{};
@@ -800,7 +801,7 @@ class chart {
 
   // --- IEC actions ------------------------------------------------------------------------
   struct inputs {
-    bool n = false, r = false, p = false, p0 = false, s = false, l = false, d = false;
+    bool n = false, r = false, p = false, p1 = false, p0 = false, s = false, l = false, d = false;
     bool sd = false, ds = false, sl = false;
     TIME sd_pt{}, sl_pt{};
   };
@@ -830,8 +831,10 @@ class chart {
   void gather_one(POU& pou, inputs& in) const {
     const std::uint8_t f = flags_[I];
     constexpr qualifier q = As::kind;
-    if constexpr (q == qualifier::P || q == qualifier::P1) {
+    if constexpr (q == qualifier::P) {
       in.p = in.p || (f & detail::bit_activated);
+    } else if constexpr (q == qualifier::P1) {
+      in.p1 = in.p1 || (f & detail::bit_activated);
     } else if constexpr (q == qualifier::P0) {
       in.p0 = in.p0 || (f & detail::bit_deactivated);
     } else {
@@ -854,9 +857,9 @@ class chart {
     }
   }
 
-  // IEC's ACTION_CONTROL for action A: returns Q.
+  // IEC's ACTION_CONTROL for action A: returns Q; `pulse` tells whether only P1 or P0 made it TRUE.
   template <std::size_t A>
-  bool control(POU& pou, TIME elapsed) {
+  bool control(POU& pou, TIME elapsed, bool& pulse) {
     const inputs in = gather<A>(pou);
     detail::control& c = controls_[A];
     // The running delays and limits advance first; then the sets; then R, which wins.
@@ -876,10 +879,13 @@ class chart {
     if (in.ds) c.ds = true;
     if (in.r) {
       c.s = c.sd = c.ds = c.sl = false;
+      pulse = false;
       return false;
     }
-    return in.n || in.p || in.p0 || in.l || in.d || c.s || c.ds || (c.sd && c.sd_et >= c.sd_pt) ||
-           (c.sl && c.sl_et < c.sl_pt);
+    const bool held =
+        in.n || in.p || in.l || in.d || c.s || c.ds || (c.sd && c.sd_et >= c.sd_pt) || (c.sl && c.sl_et < c.sl_pt);
+    pulse = !held && (in.p1 || in.p0);
+    return held || pulse;
   }
 
   void iec_actions(POU& pou, TIME elapsed) {
@@ -888,10 +894,14 @@ class chart {
     [&]<std::size_t... A>(std::index_sequence<A...>) {
       (
           [&] {
-            const bool q = control<A>(pou, elapsed);
+            bool pulse = false;
+            const bool q = control<A>(pou, elapsed, pulse);
             detail::control& c = controls_[A];
-            final_scan[A] = order::actions_first && c.q && !q;
+            // CODESYS runs an action once more after its Q fell (the final scan), except after a
+            // P1 or P0 pulse ("executed once"); a P action so runs twice, as CODESYS documents.
+            final_scan[A] = order::actions_first && c.q && !q && !c.pulse;
             c.q = q;
+            c.pulse = pulse;
             detail::engine_access::ref(states_[A].Q) = BOOL(q);
             detail::engine_access::ref(states_[A].A) = BOOL(q || final_scan[A]);
           }(),

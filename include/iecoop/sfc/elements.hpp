@@ -93,13 +93,16 @@ using S = association<qualifier::S, Action>;
 /// `A(R)`: resets a stored action (overriding: while the R step is active, the action is not).
 template <auto Action>
 using R = association<qualifier::R, Action>;
-/// `A(P)`: a pulse, one scan, when the step is activated.
+/// `A(P)`: a pulse, one scan, when the step is activated (in the codesys order the body then
+/// runs twice: the pulse and the final scan, as CODESYS documents).
 template <auto Action>
 using P = association<qualifier::P, Action>;
-/// `A(P1)`: a pulse when the step is activated (IEC edition 3).
+/// `A(P1)`: a pulse when the step is activated (IEC edition 3): the body runs once, without a
+/// final scan.
 template <auto Action>
 using P1 = association<qualifier::P1, Action>;
-/// `A(P0)`: a pulse when the step is deactivated (IEC edition 3).
+/// `A(P0)`: a pulse when the step is deactivated (IEC edition 3): the body runs once, without a
+/// final scan.
 template <auto Action>
 using P0 = association<qualifier::P0, Action>;
 /// `A(L, T#30ms)`: active while the step is, for at most the duration.
