@@ -20,6 +20,7 @@ for kernel in "$@"; do
   case $kernel in
     workload_*) n1=20 n2=120 ;;
     task_cycle_*) n1=2000 n2=12000 ;;
+    sfc_*) n1=10000 n2=110000 ;;
     *) n1=100000 n2=1100000 ;;
   esac
   a=$(collected "$kernel" $n1)
