@@ -11,7 +11,7 @@
 namespace sfc_reference {
 
 using namespace iecoop;
-using namespace iecoop::literals;
+using namespace std::chrono_literals;  // T#50ms is 50ms in a condition (see docs/sfc.md, "Transitions")
 
 // PROGRAM P_SFC_LINEAR
 template <sfc::ScanOrder Order = sfc::codesys>
@@ -47,7 +47,7 @@ struct P_SFC_LINEAR : program<P_SFC_LINEAR<Order>> {
       // STEP FILL: A_FILL(N); END_STEP
       sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>,
       // TRANSITION FROM FILL TO PULSE := FILL.T >= T#50ms; END_TRANSITION
-      sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::PULSE>, [](auto& p) { return p.FILL.T >= "T#50ms"_iec; }>,
+      sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::PULSE>, [](auto& p) { return p.FILL.T >= 50ms; }>,
       // STEP PULSE: A_PULSE(N); END_STEP
       sfc::STEP<&P::PULSE, sfc::N<&P::A_PULSE>>,
       // TRANSITION FROM PULSE TO HEAT := TRUE; END_TRANSITION
@@ -56,7 +56,7 @@ struct P_SFC_LINEAR : program<P_SFC_LINEAR<Order>> {
       sfc::STEP<&P::HEAT, sfc::N<&P::A_HEAT>>,
       // TRANSITION FROM HEAT TO CNT := HEAT.T > T#25ms AND NOT START; END_TRANSITION
       sfc::TRANSITION<sfc::FROM<&P::HEAT>, sfc::TO<&P::CNT>,
-                      [](auto& p) { return (p.HEAT.T > "T#25ms"_iec && !p.START); }>,
+                      [](auto& p) { return (p.HEAT.T > 25ms && !p.START); }>,
       // STEP CNT: A_K_CLEAR(P); A_K_INC(N); END_STEP
       sfc::STEP<&P::CNT, sfc::P<&P::A_K_CLEAR>, sfc::N<&P::A_K_INC>>,
       // TRANSITION FROM CNT TO INIT := K >= 3; END_TRANSITION

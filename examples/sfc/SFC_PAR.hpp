@@ -10,7 +10,7 @@
 namespace sfc_reference {
 
 using namespace iecoop;
-using namespace iecoop::literals;
+using namespace std::chrono_literals;  // T#50ms is 50ms in a condition (see docs/sfc.md, "Transitions")
 
 // PROGRAM P_SFC_PAR
 template <sfc::ScanOrder Order = sfc::codesys>
@@ -44,7 +44,7 @@ struct P_SFC_PAR : program<P_SFC_PAR<Order>> {
       // STEP P1: A_P1(N); END_STEP
       sfc::STEP<&P::P1, sfc::N<&P::A_P1>>,
       // TRANSITION FROM P1 TO P2 := P1.T >= T#30ms; END_TRANSITION
-      sfc::TRANSITION<sfc::FROM<&P::P1>, sfc::TO<&P::P2>, [](auto& p) { return p.P1.T >= "T#30ms"_iec; }>,
+      sfc::TRANSITION<sfc::FROM<&P::P1>, sfc::TO<&P::P2>, [](auto& p) { return p.P1.T >= 30ms; }>,
       // STEP P2: A_P2(N); END_STEP
       sfc::STEP<&P::P2, sfc::N<&P::A_P2>>,
       // STEP Q1: A_Q1(N); END_STEP
@@ -58,7 +58,7 @@ struct P_SFC_PAR : program<P_SFC_PAR<Order>> {
       // STEP JOIN: A_JOIN(N); END_STEP
       sfc::STEP<&P::JOIN, sfc::N<&P::A_JOIN>>,
       // TRANSITION FROM JOIN TO INIT := JOIN.T >= T#20ms; END_TRANSITION
-      sfc::TRANSITION<sfc::FROM<&P::JOIN>, sfc::TO<&P::INIT>, [](auto& p) { return p.JOIN.T >= "T#20ms"_iec; }>>
+      sfc::TRANSITION<sfc::FROM<&P::JOIN>, sfc::TO<&P::INIT>, [](auto& p) { return p.JOIN.T >= 20ms; }>>
       chart;
 
   void body() { chart(*this); }

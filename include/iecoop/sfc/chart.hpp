@@ -11,7 +11,7 @@
 //         sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::START>,
 //         sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>,              // STEP FILL: A_FILL(N); END_STEP
 //         sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::PULSE>,
-//                         [](auto& p) { return p.FILL.T >= T#50ms; }>,
+//                         [](auto& p) { return p.FILL.T >= 50ms; }>,   // chrono literals
 //         sfc::STEP<&P::PULSE>,
 //         sfc::TRANSITION<sfc::FROM<&P::PULSE>, sfc::TO<&P::INIT>, true>> chart;
 //       void body() { chart(*this); }                           // one scan of the chart
@@ -23,6 +23,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -470,19 +471,19 @@ class chart {
 
  public:
   // --- SFC flags (CODESYS) ---------------------------------------------------------------
-  BOOL SFCInit;                               ///< while TRUE: reset to the initial step, no actions run
-  BOOL SFCReset;                              ///< while TRUE: reset to the initial step, then the scan goes on
-  BOOL SFCPause;                              ///< while TRUE: the chart holds (nothing runs, times stand still)
-  BOOL SFCError;                              ///< a step exceeded its max_time; a later timeout waits until reset
-  BOOL SFCEnableLimit{TRUE};                  ///< FALSE: maximum times are not checked
-  BOOL SFCQuitError;                          ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
-                                              ///< active steps' times restart
-  BOOL SFCTip;                                ///< in tip mode, a rising edge fires the enabled transitions
-  BOOL SFCTipMode;                            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
-  read_only<BOOL, chart> SFCTrans;            ///< a transition fired in this scan
-  read_only<STRING<>, chart> SFCErrorStep;    ///< the step that set SFCError
-  read_only<STRING<>, chart> SFCErrorPOU;     ///< the POU of that step
-  read_only<STRING<>, chart> SFCCurrentStep;  ///< the active step (of several: the last declared)
+  BOOL SFCInit;               ///< while TRUE: reset to the initial step, no actions run
+  BOOL SFCReset;              ///< while TRUE: reset to the initial step, then the scan goes on
+  BOOL SFCPause;              ///< while TRUE: the chart holds (nothing runs, times stand still)
+  BOOL SFCError;              ///< a step exceeded its max_time; a later timeout waits until reset
+  BOOL SFCEnableLimit{TRUE};  ///< FALSE: maximum times are not checked
+  BOOL SFCQuitError;          ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
+                              ///< active steps' times restart
+  BOOL SFCTip;                ///< in tip mode, a rising edge fires the enabled transitions
+  BOOL SFCTipMode;            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
+  read_only<BOOL, detail::engine_access> SFCTrans;            ///< a transition fired in this scan
+  read_only<STRING<>, detail::engine_access> SFCErrorStep;    ///< the step that set SFCError
+  read_only<STRING<>, detail::engine_access> SFCErrorPOU;     ///< the POU of that step
+  read_only<STRING<>, detail::engine_access> SFCCurrentStep;  ///< the active step (of several: the last declared)
 
   chart() noexcept { static_assert(checked); }
 
@@ -511,21 +512,11 @@ class chart {
     if (SFCPause) return;
     const bool tip = SFCTip && !tip_previous_;
     tip_previous_ = SFCTip;
-    SFCTrans = FALSE;
+    detail::engine_access::ref(SFCTrans) = FALSE;
     if constexpr (order::actions_first) {
-      enter_codesys(pou, elapsed);
-      if (changed_) current_step(pou);  // the steps the last cycle's transitions activated are active now
-      step_actions(pou);
-      iec_actions(pou, elapsed);
-      fire(pou, tip);
-      changed_ = SFCTrans;
+      scan_codesys(pou, elapsed, tip);
     } else {
-      enter_matiec(pou, elapsed);
-      fire(pou, tip);
-      apply_matiec(pou);
-      if (SFCTrans) current_step(pou);
-      step_actions(pou);
-      iec_actions(pou, elapsed);
+      scan_matiec(pou, elapsed, tip);
     }
   }
 
@@ -584,6 +575,76 @@ class chart {
     }(std::make_index_sequence<step_count>{});
   }
 
+  // --- Bit sets ---------------------------------------------------------------------------
+  // The engine keeps the active steps, the step events of the scan and the actions' Q as bit
+  // sets, so that a scan costs per active step and per running action, not per element.
+  template <std::size_t N>
+  using bits = std::array<std::uint64_t, (N + 63) / 64 == 0 ? 1 : (N + 63) / 64>;
+
+  template <std::size_t N>
+  static constexpr bool test_bit(const bits<N>& b, std::size_t i) noexcept {
+    return ((b[i / 64] >> (i % 64)) & 1u) != 0;
+  }
+  template <std::size_t N>
+  static constexpr void set_bit(bits<N>& b, std::size_t i) noexcept {
+    b[i / 64] |= std::uint64_t{1} << (i % 64);
+  }
+  template <std::size_t N>
+  static constexpr void clear_bit(bits<N>& b, std::size_t i) noexcept {
+    b[i / 64] &= ~(std::uint64_t{1} << (i % 64));
+  }
+  /// Calls table[i](args...) for every set bit i, lowest first.
+  template <std::size_t N, class Table, class... Args>
+  static void for_each_bit(const bits<N>& b, const Table& table, Args&... args) {
+    for (std::size_t w = 0; w < b.size(); ++w) {
+      for (std::uint64_t m = b[w]; m != 0; m &= m - 1) {
+        table[w * 64 + static_cast<std::size_t>(std::countr_zero(m))](args...);
+      }
+    }
+  }
+  template <std::size_t N>
+  static constexpr bool any(const bits<N>& b) noexcept {
+    for (const std::uint64_t w : b) {
+      if (w != 0) return true;
+    }
+    return false;
+  }
+
+  using step_set = bits<step_count>;
+  using action_set = bits<action_count>;
+
+  // Actions are numbered by their rank in the run order (alphabetical in codesys).
+  static constexpr std::array<std::size_t, action_count> rank_of = [] {
+    std::array<std::size_t, action_count> result{};
+    for (std::size_t k = 0; k < action_count; ++k) result[action_order[k]] = k;
+    return result;
+  }();
+
+  // Per step: the actions associated with it, and those whose control reads its time (L, D, DS).
+  template <bool TimedOnly>
+  static constexpr std::array<action_set, step_count> step_action_masks = [] {
+    std::array<action_set, step_count> result{};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (
+          [&] {
+            []<class... It>(detail::type_list<It...>, action_set& mask) {
+              (
+                  [&] {
+                    if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                      constexpr qualifier q = It::kind;
+                      if (!TimedOnly || q == qualifier::L || q == qualifier::D || q == qualifier::DS) {
+                        set_bit<action_count>(mask, rank_of[action_index<It::action>()]);
+                      }
+                    }
+                  }(),
+                  ...);
+            }(typename step_at<I>::items{}, result[I]);
+          }(),
+          ...);
+    }(std::make_index_sequence<step_count>{});
+    return result;
+  }();
+
   // --- Reset ------------------------------------------------------------------------------
   void restart(POU& pou) {
     started_ = true;
@@ -593,13 +654,17 @@ class chart {
       X<I>(pou) = BOOL(initial);
       X_next<I>(pou) = BOOL(initial);
       T<I>(pou) = TIME{};
-      flags_[I] = initial ? detail::bit_enter : 0;
     });
+    active_ = step_set{};
+    set_bit<step_count>(active_, initial_index);
+    entered_ = left_ = activated_ = deactivated_ = step_set{};
+    set_bit<step_count>(entered_, initial_index);  // its activation is seen by the next scan
     for (std::size_t a = 0; a < action_count; ++a) {
       controls_[a] = detail::control{};
       detail::engine_access::ref(states_[a].Q) = FALSE;
       detail::engine_access::ref(states_[a].A) = FALSE;
     }
+    q_ = final_ = pulsed_ = timing_ = action_set{};
     [&]<std::size_t... A>(std::index_sequence<A...>) {
       ((detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value
             ? void(set_variable<action_at<A>>(pou, false))
@@ -609,13 +674,12 @@ class chart {
     SFCError = FALSE;
     text(SFCErrorStep, "");
     text(SFCErrorPOU, "");
-    SFCTrans = FALSE;
+    detail::engine_access::ref(SFCTrans) = FALSE;
     quit_held_ = false;
-    changed_ = false;
     text(SFCCurrentStep, step_name<initial_index>);
   }
 
-  static void text(read_only<STRING<>, chart>& variable, std::string_view value) noexcept {
+  static void text(read_only<STRING<>, detail::engine_access>& variable, std::string_view value) noexcept {
     detail::engine_access::ref(variable).assign(value);
   }
 
@@ -632,59 +696,187 @@ class chart {
   }
 
   // --- Step evolution ---------------------------------------------------------------------
-  // codesys: the steps the last scan's transitions activated and deactivated take effect now.
-  void enter_codesys(POU& pou, TIME elapsed) {
-    each_step([&](auto i) {
-      constexpr std::size_t I = decltype(i)::value;
-      const std::uint8_t f = flags_[I];
+  template <class It>
+  static constexpr detail::step_action_kind step_action_kind_of() {
+    if constexpr (It::iecoop_sfc_element == detail::element_kind::step_action) {
+      return It::kind;
+    } else {
+      return detail::step_action_kind::entry;
+    }
+  }
+
+  template <class F>
+  static constexpr auto step_table(F) {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
+      return std::array<void (*)(chart&, POU&, TIME), step_count>{&F::template call<I>...};
+    }(std::make_index_sequence<step_count>{});
+  }
+
+  // codesys: the steps the last cycle's transitions activated (X := _X, T := 0) or left.
+  struct apply_pending {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, TIME) {
       const bool active = X_next<I>(pou);
       X<I>(pou) = BOOL(active);
-      if (f & detail::bit_enter) {
-        T<I>(pou) = TIME{};
-      } else if (active) {
-        T<I>(pou) = T<I>(pou) + elapsed;
+      if (test_bit<step_count>(c.activated_, I)) T<I>(pou) = TIME{};
+      if (active) {
+        set_bit<step_count>(c.active_, I);
+      } else {
+        clear_bit<step_count>(c.active_, I);
       }
-      flags_[I] = static_cast<std::uint8_t>(((f & detail::bit_enter) ? detail::bit_activated : 0) |
-                                            ((f & detail::bit_leave) ? detail::bit_deactivated : 0));
-    });
-  }
+    }
+  };
+  // matiec: the transitions of this scan take effect now.
+  struct apply_left {
+    template <std::size_t I>
+    static void call(chart&, POU& pou, TIME) {
+      X<I>(pou) = FALSE;
+      X_next<I>(pou) = FALSE;
+    }
+  };
+  struct apply_entered {
+    template <std::size_t I>
+    static void call(chart&, POU& pou, TIME) {
+      X<I>(pou) = TRUE;
+      X_next<I>(pou) = TRUE;
+      T<I>(pou) = TIME{};
+    }
+  };
+  // An active step's time advances (not in the scan of its activation).
+  struct advance_time {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, TIME elapsed) {
+      if (!test_bit<step_count>(c.activated_, I)) T<I>(pou) = T<I>(pou) + elapsed;
+    }
+  };
+  struct exit_actions {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, TIME) {
+      c.template step_actions_of<I, detail::step_action_kind::exit>(pou);
+    }
+  };
+  struct entry_actions {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, TIME) {
+      c.template step_actions_of<I, detail::step_action_kind::entry>(pou);
+    }
+  };
+  // An active step: its maximum time, its CODESYS step action, and which action controls read its time.
+  struct active_step {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, TIME) {
+      constexpr TIME maximum = time_limit_of<I, true>();
+      if constexpr (maximum != TIME{}) {
+        if (T<I>(pou) > maximum && c.SFCEnableLimit && !c.SFCError) {
+          c.SFCError = TRUE;
+          text(c.SFCErrorStep, step_name<I>);
+          text(c.SFCErrorPOU, iecoop::detail::short_type_name<POU>());
+        }
+      }
+      c.template step_actions_of<I, detail::step_action_kind::active>(pou);
+      constexpr action_set timed = step_action_masks<true>[I];
+      for (std::size_t w = 0; w < timed.size(); ++w) c.dirty_[w] |= timed[w];
+    }
+  };
+  struct advance_and_check {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, TIME elapsed) {
+      advance_time::template call<I>(c, pou, elapsed);
+      active_step::template call<I>(c, pou, elapsed);
+    }
+  };
+  // Whether some step has a CODESYS "active" step action (code that may read other steps' times).
+  static constexpr bool has_active_actions = [] {
+    bool result = false;
+    [&]<class... S>(detail::type_list<S...>) {
+      (
+          [&]<class... It>(detail::type_list<It...>) {
+            ((result = result || (It::iecoop_sfc_element == detail::element_kind::step_action &&
+                                  step_action_kind_of<It>() == detail::step_action_kind::active)),
+             ...);
+          }(typename S::items{}),
+          ...);
+    }(steps{});
+    return result;
+  }();
+  static constexpr auto advance_and_check_table = step_table(advance_and_check{});
+  static constexpr auto apply_pending_table = step_table(apply_pending{});
+  static constexpr auto apply_left_table = step_table(apply_left{});
+  static constexpr auto apply_entered_table = step_table(apply_entered{});
+  static constexpr auto advance_time_table = step_table(advance_time{});
+  static constexpr auto exit_table = step_table(exit_actions{});
+  static constexpr auto entry_table = step_table(entry_actions{});
+  static constexpr auto active_table = step_table(active_step{});
 
-  // matiec: the active steps' times advance; a pending activation (the initial step after a
-  // reset) is seen by this scan's actions.
-  void enter_matiec(POU& pou, TIME elapsed) {
-    each_step([&](auto i) {
-      constexpr std::size_t I = decltype(i)::value;
-      const std::uint8_t f = flags_[I];
-      if (X<I>(pou) && !(f & detail::bit_enter)) T<I>(pou) = T<I>(pou) + elapsed;
-      flags_[I] = (f & detail::bit_enter) ? detail::bit_activated : 0;
-    });
-  }
-
-  void apply_matiec(POU& pou) {
-    if (!SFCTrans) return;
-    each_step([&](auto i) {
-      constexpr std::size_t I = decltype(i)::value;
-      std::uint8_t f = flags_[I];
-      if (f & detail::bit_leave) {
-        X<I>(pou) = FALSE;
-        f |= detail::bit_deactivated;
+  // The step actions and time checks of the scan, then the actions' controls are marked to be
+  // recomputed where a step changed.
+  void steps_of_scan(POU& pou, TIME elapsed) {
+    for_each_bit<step_count>(deactivated_, exit_table, *this, pou, elapsed);
+    for_each_bit<step_count>(activated_, entry_table, *this, pou, elapsed);
+    for_each_bit<step_count>(active_, active_table, *this, pou, elapsed);
+    for (std::size_t v = 0; v < activated_.size(); ++v) {  // the controls of the changed steps' actions
+      for (std::uint64_t m = activated_[v] | deactivated_[v]; m != 0; m &= m - 1) {
+        const action_set& mask = step_action_masks<false>[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
+        for (std::size_t w = 0; w < dirty_.size(); ++w) dirty_[w] |= mask[w];
       }
-      if (f & detail::bit_enter) {
-        X<I>(pou) = TRUE;
-        T<I>(pou) = TIME{};
-        f |= detail::bit_activated;
-      }
-      flags_[I] = static_cast<std::uint8_t>(f & ~(detail::bit_enter | detail::bit_leave));
-      X_next<I>(pou) = X<I>(pou);
-    });
+    }
   }
 
   // --- Transitions ------------------------------------------------------------------------
+  // A transition's source steps as a bit set.
+  template <std::size_t Tr>
+  static constexpr step_set sources = [] {
+    step_set result{};
+    for (const std::size_t s : ends<transition_at<Tr>>::from) set_bit<step_count>(result, s);
+    return result;
+  }();
+
+  // Each transition belongs to its first source step (the lowest-numbered), and a scan tests
+  // only the transitions of the active steps, step by step, each step's in test order. That is
+  // the test order itself unless a transition shares a source with one tested before it that
+  // belongs to a later step; such a chart is tested transition by transition.
+  template <std::size_t Tr>
+  static constexpr std::size_t home = [] {
+    std::size_t result = detail::npos;
+    for (const std::size_t s : ends<transition_at<Tr>>::from) result = s < result ? s : result;
+    return result;
+  }();
+  static constexpr bool by_step = [] {
+    bool ok = true;
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      const std::array<std::size_t, transition_count> homes{home<transition_order[K]>...};
+      const std::array<step_set, transition_count> from{sources<transition_order[K]>...};
+      for (std::size_t a = 0; a < transition_count; ++a) {
+        for (std::size_t b = a + 1; b < transition_count; ++b) {
+          bool shared = false;
+          for (std::size_t w = 0; w < from[a].size(); ++w) shared = shared || (from[a][w] & from[b][w]) != 0;
+          if (shared && homes[a] > homes[b]) ok = false;
+        }
+      }
+    }(std::make_index_sequence<transition_count>{});
+    return ok;
+  }();
+  struct fire_group {
+    template <std::size_t I>
+    static void call(chart& c, POU& pou, bool tip) {
+      [&]<std::size_t... K>(std::index_sequence<K...>) {
+        ((home<transition_order[K]> == I ? c.template try_fire<transition_order[K]>(pou, tip) : void()), ...);
+      }(std::make_index_sequence<transition_count>{});
+    }
+  };
+  static constexpr auto fire_table = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<void (*)(chart&, POU&, bool), step_count>{&fire_group::template call<I>...};
+  }(std::make_index_sequence<step_count>{});
+
   void fire(POU& pou, bool tip) {
     if (SFCTipMode && !tip) return;
-    [&]<std::size_t... K>(std::index_sequence<K...>) {
-      (try_fire<transition_order[K]>(pou, tip), ...);
-    }(std::make_index_sequence<transition_count>{});
+    if constexpr (by_step) {
+      for_each_bit<step_count>(active_, fire_table, *this, pou, tip);
+    } else {
+      [&]<std::size_t... K>(std::index_sequence<K...>) {
+        (try_fire<transition_order[K]>(pou, tip), ...);
+      }(std::make_index_sequence<transition_count>{});
+    }
   }
 
   template <std::size_t Tr>
@@ -692,19 +884,24 @@ class chart {
     using E = ends<transition_at<Tr>>;
     // Enabled: every source step active (at the start of the scan) and not left by a
     // transition tested before this one; each source's minimum time reached.
-    const bool enabled = [&]<std::size_t... F>(std::index_sequence<F...>) {
-      return ((X<E::from[F]>(pou) && !(flags_[E::from[F]] & detail::bit_leave) && min_time_reached<E::from[F]>(pou)) &&
-              ...);
+    constexpr step_set from = sources<Tr>;
+    for (std::size_t w = 0; w < from.size(); ++w) {
+      if ((active_[w] & from[w]) != from[w] || (left_[w] & from[w]) != 0) return;
+    }
+    const bool timed = [&]<std::size_t... F>(std::index_sequence<F...>) {
+      return (min_time_reached<E::from[F]>(pou) && ...);
     }(std::make_index_sequence<E::from.size()>{});
-    if (!enabled) return;
+    if (!timed) return;
     if (!SFCTipMode || !tip) {
       if (!detail::test<transition_at<Tr>::condition>(pou)) return;
     }
-    SFCTrans = TRUE;
-    [&]<std::size_t... F>(std::index_sequence<F...>) {
-      ((flags_[E::from[F]] |= detail::bit_leave), ...);
-      if constexpr (order::actions_first) ((X_next<E::from[F]>(pou) = FALSE), ...);
-    }(std::make_index_sequence<E::from.size()>{});
+    detail::engine_access::ref(SFCTrans) = TRUE;
+    for (std::size_t w = 0; w < from.size(); ++w) left_[w] |= from[w];
+    if constexpr (order::actions_first) {
+      [&]<std::size_t... F>(std::index_sequence<F...>) {
+        ((X_next<E::from[F]>(pou) = FALSE), ...);
+      }(std::make_index_sequence<E::from.size()>{});
+    }
     [&]<std::size_t... G>(std::index_sequence<G...>) {
       (activate<E::to[G]>(pou), ...);
     }(std::make_index_sequence<E::to.size()>{});
@@ -712,15 +909,14 @@ class chart {
 
   template <std::size_t I>
   void activate(POU& pou) {
-    std::uint8_t& f = flags_[I];
     // Unsafe: the step is active and stays so (no firing transition leaves it), or two
     // transitions activate it in one scan.
-    if ((f & detail::bit_enter) || (X<I>(pou) && !(f & detail::bit_leave))) {
+    if (test_bit<step_count>(entered_, I) || (test_bit<step_count>(active_, I) && !test_bit<step_count>(left_, I))) {
       fault(fault_kind::unsafe_chart,
             "an SFC transition activated a step that is active already (alternative branches that both lead into "
             "one sequence); the step stays active once");
     }
-    f |= detail::bit_enter;
+    set_bit<step_count>(entered_, I);
     if constexpr (order::actions_first) X_next<I>(pou) = TRUE;
   }
 
@@ -749,35 +945,15 @@ class chart {
     return result;
   }
 
-  void current_step(POU& pou) {
-    std::string_view name = step_name<initial_index>;
-    bool any = false;
-    each_step([&](auto i) {
-      constexpr std::size_t I = decltype(i)::value;
-      if (X<I>(pou)) {
-        name = step_name<I>;
-        any = true;
+  // SFCCurrentStep: the last declared of the active steps (of none, unchanged).
+  void current_step() {
+    static constexpr std::array<std::string_view, step_count> names = step_names();
+    for (std::size_t w = active_.size(); w-- > 0;) {
+      if (active_[w] != 0) {
+        text(SFCCurrentStep, names[w * 64 + 63 - static_cast<std::size_t>(std::countl_zero(active_[w]))]);
+        return;
       }
-    });
-    if (any) text(SFCCurrentStep, name);
-  }
-
-  // --- CODESYS step actions and time checks ----------------------------------------------
-  void step_actions(POU& pou) {
-    each_step([&](auto i) { step_actions_of<decltype(i)::value, detail::step_action_kind::exit>(pou); });
-    each_step([&](auto i) { step_actions_of<decltype(i)::value, detail::step_action_kind::entry>(pou); });
-    each_step([&](auto i) {
-      constexpr std::size_t I = decltype(i)::value;
-      constexpr TIME maximum = time_limit_of<I, true>();
-      if constexpr (maximum != TIME{}) {
-        if (X<I>(pou) && T<I>(pou) > maximum && SFCEnableLimit && !SFCError) {
-          SFCError = TRUE;
-          text(SFCErrorStep, step_name<I>);
-          text(SFCErrorPOU, iecoop::detail::short_type_name<POU>());
-        }
-      }
-      step_actions_of<I, detail::step_action_kind::active>(pou);
-    });
+    }
   }
 
   template <std::size_t I, detail::step_action_kind K>
@@ -786,13 +962,7 @@ class chart {
       (
           [&] {
             if constexpr (It::iecoop_sfc_element == detail::element_kind::step_action) {
-              if constexpr (It::kind == K) {
-                bool run = false;
-                if constexpr (K == detail::step_action_kind::entry) run = (flags_[I] & detail::bit_activated) != 0;
-                if constexpr (K == detail::step_action_kind::exit) run = (flags_[I] & detail::bit_deactivated) != 0;
-                if constexpr (K == detail::step_action_kind::active) run = X<I>(pou);
-                if (run) (pou.*It::action)();
-              }
+              if constexpr (It::kind == K) (pou.*It::action)();
             }
           }(),
           ...);
@@ -829,17 +999,15 @@ class chart {
 
   template <std::size_t I, class As>
   void gather_one(POU& pou, inputs& in) const {
-    const std::uint8_t f = flags_[I];
     constexpr qualifier q = As::kind;
     if constexpr (q == qualifier::P) {
-      in.p = in.p || (f & detail::bit_activated);
+      in.p = in.p || test_bit<step_count>(activated_, I);
     } else if constexpr (q == qualifier::P1) {
-      in.p1 = in.p1 || (f & detail::bit_activated);
+      in.p1 = in.p1 || test_bit<step_count>(activated_, I);
     } else if constexpr (q == qualifier::P0) {
-      in.p0 = in.p0 || (f & detail::bit_deactivated);
+      in.p0 = in.p0 || test_bit<step_count>(deactivated_, I);
     } else {
-      const bool x = X<I>(pou);
-      if (!x) return;
+      if (!X<I>(pou)) return;
       if constexpr (q == qualifier::N) in.n = true;
       if constexpr (q == qualifier::R) in.r = true;
       if constexpr (q == qualifier::S) in.s = true;
@@ -857,90 +1025,166 @@ class chart {
     }
   }
 
-  // IEC's ACTION_CONTROL for action A: returns Q; `pulse` tells whether only P1 or P0 made it TRUE.
-  template <std::size_t A>
-  bool control(POU& pou, TIME elapsed, bool& pulse) {
-    const inputs in = gather<A>(pou);
-    detail::control& c = controls_[A];
-    // The running delays and limits advance first; then the sets; then R, which wins.
-    if (c.sd) c.sd_et = c.sd_et + elapsed;
-    if (c.sl) c.sl_et = c.sl_et + elapsed;
-    if (in.s) c.s = true;
-    if (in.sd && !c.sd) {
-      c.sd = true;
-      c.sd_et = TIME{};
-      c.sd_pt = in.sd_pt;
+  // IEC's ACTION_CONTROL for action A (by its rank K in the run order), recomputed where a step
+  // changed, a pulse ended, a time runs or a final scan was due: Q, A, and what follows.
+  struct control_of {
+    template <std::size_t K>
+    static void call(chart& c, POU& pou, TIME elapsed) {
+      constexpr std::size_t A = action_order[K];
+      const inputs in = c.template gather<A>(pou);
+      detail::control& s = c.controls_[A];
+      // The running delays and limits advance first; then the sets; then R, which wins.
+      if (s.sd) s.sd_et = s.sd_et + elapsed;
+      if (s.sl) s.sl_et = s.sl_et + elapsed;
+      if (in.s) s.s = true;
+      if (in.sd && !s.sd) {
+        s.sd = true;
+        s.sd_et = TIME{};
+        s.sd_pt = in.sd_pt;
+      }
+      if (in.sl && !s.sl) {
+        s.sl = true;
+        s.sl_et = TIME{};
+        s.sl_pt = in.sl_pt;
+      }
+      if (in.ds) s.ds = true;
+      bool q = false;
+      bool pulse = false;
+      if (in.r) {
+        s.s = s.sd = s.ds = s.sl = false;
+      } else {
+        const bool held =
+            in.n || in.p || in.l || in.d || s.s || s.ds || (s.sd && s.sd_et >= s.sd_pt) || (s.sl && s.sl_et < s.sl_pt);
+        pulse = !held && (in.p1 || in.p0);
+        q = held || pulse;
+      }
+      // CODESYS runs an action once more after its Q fell (the final scan), except after a
+      // P1 or P0 pulse ("executed once"); a P action so runs twice, as CODESYS documents.
+      const bool final_scan = order::actions_first && s.q && !q && !s.pulse;
+      s.q = q;
+      s.pulse = pulse;
+      if (q) {
+        set_bit<action_count>(c.q_, K);
+      } else {
+        clear_bit<action_count>(c.q_, K);
+      }
+      if (final_scan && with_body_of<K>) set_bit<action_count>(c.final_, K);
+      // Recomputed in the next scan too: after a pulse (its Q falls), while a delay or limit
+      // runs, and after a final scan (A falls).
+      if (in.p || in.p1 || in.p0 || final_scan) set_bit<action_count>(c.pulsed_, K);
+      if (s.sd || s.sl) set_bit<action_count>(c.timing_, K);
+      detail::engine_access::ref(c.states_[A].Q) = BOOL(q);
+      detail::engine_access::ref(c.states_[A].A) = BOOL(q || final_scan);
+      if constexpr (detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value) {
+        pou.*action_at<A> = BOOL(q);  // a BOOL variable follows Q, without a final scan
+      }
     }
-    if (in.sl && !c.sl) {
-      c.sl = true;
-      c.sl_et = TIME{};
-      c.sl_pt = in.sl_pt;
+  };
+  template <std::size_t K>
+  static constexpr bool with_body_of =
+      !detail::bool_member<std::remove_cv_t<decltype(action_at<action_order[K]>)>>::value;
+
+  struct body_of {
+    template <std::size_t K>
+    static void call(POU& pou) {
+      constexpr auto action = action_at<action_order[K]>;
+      if constexpr (!detail::bool_member<std::remove_cv_t<decltype(action)>>::value) (pou.*action)();
     }
-    if (in.ds) c.ds = true;
-    if (in.r) {
-      c.s = c.sd = c.ds = c.sl = false;
-      pulse = false;
-      return false;
-    }
-    const bool held =
-        in.n || in.p || in.l || in.d || c.s || c.ds || (c.sd && c.sd_et >= c.sd_pt) || (c.sl && c.sl_et < c.sl_pt);
-    pulse = !held && (in.p1 || in.p0);
-    return held || pulse;
-  }
+  };
+  static constexpr auto control_table = []<std::size_t... K>(std::index_sequence<K...>) {
+    return std::array<void (*)(chart&, POU&, TIME), action_count>{&control_of::template call<K>...};
+  }(std::make_index_sequence<action_count>{});
+  static constexpr auto body_table = []<std::size_t... K>(std::index_sequence<K...>) {
+    return std::array<void (*)(POU&), action_count>{&body_of::template call<K>...};
+  }(std::make_index_sequence<action_count>{});
+
+  // The actions with a body (ACTIONs; a BOOL variable has none).
+  static constexpr action_set with_body = [] {
+    action_set result{};
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      ((detail::bool_member<std::remove_cv_t<decltype(action_at<action_order[K]>)>>::value
+            ? void()
+            : set_bit<action_count>(result, K)),
+       ...);
+    }(std::make_index_sequence<action_count>{});
+    return result;
+  }();
 
   void iec_actions(POU& pou, TIME elapsed) {
-    // Every control first, then the bodies: an action body cannot change another's Q mid-scan.
-    std::array<bool, action_count> final_scan{};
-    [&]<std::size_t... A>(std::index_sequence<A...>) {
-      (
-          [&] {
-            bool pulse = false;
-            const bool q = control<A>(pou, elapsed, pulse);
-            detail::control& c = controls_[A];
-            // CODESYS runs an action once more after its Q fell (the final scan), except after a
-            // P1 or P0 pulse ("executed once"); a P action so runs twice, as CODESYS documents.
-            final_scan[A] = order::actions_first && c.q && !q && !c.pulse;
-            c.q = q;
-            c.pulse = pulse;
-            detail::engine_access::ref(states_[A].Q) = BOOL(q);
-            detail::engine_access::ref(states_[A].A) = BOOL(q || final_scan[A]);
-          }(),
-          ...);
-    }(std::make_index_sequence<action_count>{});
-    if constexpr (order::actions_first) {
-      [&]<std::size_t... K>(std::index_sequence<K...>) {
-        ((final_scan[action_order[K]] ? run<action_order[K]>(pou) : void()), ...);
-      }(std::make_index_sequence<action_count>{});
-    }
-    [&]<std::size_t... K>(std::index_sequence<K...>) {
-      (run_if_active<action_order[K]>(pou), ...);
-    }(std::make_index_sequence<action_count>{});
-  }
-
-  template <std::size_t A>
-  void run_if_active(POU& pou) {
-    constexpr auto action = action_at<A>;
-    if constexpr (detail::bool_member<std::remove_cv_t<decltype(action)>>::value) {
-      pou.*action = BOOL(controls_[A].q);  // a BOOL variable follows Q, without a final scan
-    } else {
-      if (controls_[A].q) (pou.*action)();
+    if constexpr (action_count > 0) {
+      // Every control first, then the bodies: an action body cannot change another's Q mid-scan.
+      for (std::size_t w = 0; w < dirty_.size(); ++w) {
+        dirty_[w] |= pulsed_[w] | timing_[w];
+        pulsed_[w] = timing_[w] = final_[w] = 0;
+      }
+      const action_set dirty = dirty_;
+      dirty_ = action_set{};
+      for_each_bit<action_count>(dirty, control_table, *this, pou, elapsed);
+      action_set run = q_;
+      for (std::size_t w = 0; w < run.size(); ++w) run[w] &= with_body[w];
+      if constexpr (order::actions_first) for_each_bit<action_count>(final_, body_table, pou);
+      for_each_bit<action_count>(run, body_table, pou);
     }
   }
 
-  template <std::size_t A>
-  void run(POU& pou) {
-    constexpr auto action = action_at<A>;
-    if constexpr (!detail::bool_member<std::remove_cv_t<decltype(action)>>::value) (pou.*action)();
+  // --- The scan ---------------------------------------------------------------------------
+  void scan_codesys(POU& pou, TIME elapsed, bool tip) {
+    activated_ = entered_;
+    deactivated_ = left_;
+    entered_ = left_ = step_set{};
+    if (any<step_count>(activated_) || any<step_count>(deactivated_)) {
+      step_set changed = activated_;
+      for (std::size_t w = 0; w < changed.size(); ++w) changed[w] |= deactivated_[w];
+      for_each_bit<step_count>(changed, apply_pending_table, *this, pou, elapsed);
+      current_step();  // the steps the last cycle's transitions activated are active now
+    }
+    if (any<step_count>(activated_) || any<step_count>(deactivated_) || has_active_actions) {
+      for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
+      steps_of_scan(pou, elapsed);
+    } else {  // no step changed and no step action: one pass over the active steps
+      for_each_bit<step_count>(active_, advance_and_check_table, *this, pou, elapsed);
+    }
+    iec_actions(pou, elapsed);
+    fire(pou, tip);
   }
 
-  std::array<std::uint8_t, step_count> flags_{};
+  void scan_matiec(POU& pou, TIME elapsed, bool tip) {
+    activated_ = entered_;  // only a reset leaves an activation pending
+    deactivated_ = step_set{};
+    entered_ = left_ = step_set{};
+    for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
+    fire(pou, tip);
+    if (SFCTrans) {
+      for_each_bit<step_count>(left_, apply_left_table, *this, pou, elapsed);
+      for_each_bit<step_count>(entered_, apply_entered_table, *this, pou, elapsed);
+      for (std::size_t w = 0; w < active_.size(); ++w) {
+        active_[w] = (active_[w] & ~left_[w]) | entered_[w];
+        activated_[w] |= entered_[w];
+        deactivated_[w] = left_[w];
+      }
+      entered_ = left_ = step_set{};
+      current_step();
+    }
+    steps_of_scan(pou, elapsed);
+    iec_actions(pou, elapsed);
+  }
+
+  step_set active_{};       // the steps whose X is TRUE
+  step_set entered_{};      // activated by this scan's transitions (codesys: for the next cycle)
+  step_set left_{};         // left by this scan's transitions
+  step_set activated_{};    // activated: this scan's actions see it
+  step_set deactivated_{};  // deactivated: this scan's actions see it
+  action_set q_{};          // the actions whose Q is TRUE
+  action_set final_{};      // the actions whose final scan is this scan
+  action_set pulsed_{};     // recomputed next scan: a pulse ends, or A falls after a final scan
+  action_set timing_{};     // recomputed every scan while an SD delay or SL limit runs
+  action_set dirty_{};      // to recompute in this scan
   std::array<detail::control, action_count> controls_{};
   std::array<action_state, action_count> states_{};
   TIME last_{};
   bool started_ = false;
   bool quit_held_ = false;
   bool tip_previous_ = false;
-  bool changed_ = false;  // codesys: transitions fired in the last cycle (SFCCurrentStep follows)
 };
 
 }  // namespace iecoop::sfc

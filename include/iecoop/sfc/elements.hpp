@@ -246,7 +246,8 @@ consteval int priority_of() noexcept {
  *
  * The condition is a BOOL member (`&P::START`), a member function returning BOOL — a named
  * transition object, virtual if a derived POU may override it (`&P::T_Filled`) —, a callable
- * taking the POU (`[](auto& p) { return p.FILL.T >= T#50ms; }`), or `true`. The option
+ * taking the POU (`[](auto& p) { return p.FILL.T >= 50ms; }`; a duration in it as a chrono literal:
+ * Clang 14 with UBSan crashes on an "..."_iec literal there), or `true`. The option
  * `sfc::PRIORITY<n>` is ST's `(PRIORITY := n)`.
  */
 template <class From, class To, auto Condition, class... Options>
