@@ -337,7 +337,7 @@ TEST_SUITE("sfc") {
     CHECK(p.C_JOIN == 2);  // its cycle, and the final scan
   }
 
-  TEST_CASE("simultaneous divergence activates every branch; the convergence waits for all of them") {
+  TEST_CASE("simultaneous divergence activates every branch, and the convergence waits for all of them") {
     P_SFC_PAR<sfc::codesys> p;
     p.IN_J = TRUE;
     p.GO = TRUE;
@@ -443,7 +443,7 @@ TEST_SUITE("sfc") {
     CHECK((f.B.X && f.exits == 1 && f.actives == 3));
   }
 
-  TEST_CASE("SFCInit holds the chart in its initial step without actions; SFCPause freezes it") {
+  TEST_CASE("SFCInit holds the chart in its initial step without actions, and SFCPause freezes it") {
     FB_Seq<sfc::codesys> f;
     f.GO = TRUE;
     scan(f, 0);

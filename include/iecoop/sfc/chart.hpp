@@ -52,6 +52,7 @@ namespace detail {
 using iecoop::detail::type_list;
 
 struct engine_access {
+  static constexpr void name(step_name_view& view, std::string_view name) noexcept { view.name_ = name; }
   template <class T, class O>
   static constexpr T& ref(read_only<T, O>& variable) noexcept {
     return iecoop::detail::read_only_access::ref(variable);
@@ -480,10 +481,10 @@ class chart {
                               ///< active steps' times restart
   BOOL SFCTip;                ///< in tip mode, a rising edge fires the enabled transitions
   BOOL SFCTipMode;            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
-  read_only<BOOL, detail::engine_access> SFCTrans;            ///< a transition fired in this scan
-  read_only<STRING<>, detail::engine_access> SFCErrorStep;    ///< the step that set SFCError
-  read_only<STRING<>, detail::engine_access> SFCErrorPOU;     ///< the POU of that step
-  read_only<STRING<>, detail::engine_access> SFCCurrentStep;  ///< the active step (of several: the last declared)
+  read_only<BOOL, detail::engine_access> SFCTrans;          ///< a transition fired in this scan
+  read_only<STRING<>, detail::engine_access> SFCErrorStep;  ///< the step that set SFCError
+  read_only<STRING<>, detail::engine_access> SFCErrorPOU;   ///< the POU of that step
+  step_name_view SFCCurrentStep;                            ///< the active step (of several: the last declared)
 
   chart() noexcept { static_assert(checked); }
 
@@ -620,9 +621,8 @@ class chart {
     return result;
   }();
 
-  // Per step: the actions associated with it, and those whose control reads its time (L, D, DS).
-  template <bool TimedOnly>
-  static constexpr std::array<action_set, step_count> step_action_masks = [] {
+  // Per step: the actions associated with it (their controls change when the step does).
+  static constexpr std::array<action_set, step_count> step_action_mask = [] {
     std::array<action_set, step_count> result{};
     [&]<std::size_t... I>(std::index_sequence<I...>) {
       (
@@ -631,10 +631,7 @@ class chart {
               (
                   [&] {
                     if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
-                      constexpr qualifier q = It::kind;
-                      if (!TimedOnly || q == qualifier::L || q == qualifier::D || q == qualifier::DS) {
-                        set_bit<action_count>(mask, rank_of[action_index<It::action>()]);
-                      }
+                      set_bit<action_count>(mask, rank_of[action_index<It::action>()]);
                     }
                   }(),
                   ...);
@@ -676,7 +673,7 @@ class chart {
     text(SFCErrorPOU, "");
     detail::engine_access::ref(SFCTrans) = FALSE;
     quit_held_ = false;
-    text(SFCCurrentStep, step_name<initial_index>);
+    detail::engine_access::name(SFCCurrentStep, step_name<initial_index>);
   }
 
   static void text(read_only<STRING<>, detail::engine_access>& variable, std::string_view value) noexcept {
@@ -764,7 +761,7 @@ class chart {
   // An active step: its maximum time, its CODESYS step action, and which action controls read its time.
   struct active_step {
     template <std::size_t I>
-    static void call(chart& c, POU& pou, TIME) {
+    static void call(chart& c, POU& pou, TIME elapsed) {
       constexpr TIME maximum = time_limit_of<I, true>();
       if constexpr (maximum != TIME{}) {
         if (T<I>(pou) > maximum && c.SFCEnableLimit && !c.SFCError) {
@@ -774,8 +771,21 @@ class chart {
         }
       }
       c.template step_actions_of<I, detail::step_action_kind::active>(pou);
-      constexpr action_set timed = step_action_masks<true>[I];
-      for (std::size_t w = 0; w < timed.size(); ++w) c.dirty_[w] |= timed[w];
+      // An L, D or DS association changes its action's Q only in the scan the step's time
+      // reaches its duration (or at an activation or deactivation, marked elsewhere).
+      [&]<class... It>(detail::type_list<It...>) {
+        (
+            [&] {
+              if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                if constexpr (It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS) {
+                  if (TIME(T<I>(pou) - elapsed) < It::duration) {
+                    set_bit<action_count>(c.dirty_, rank_of[action_index<It::action>()]);
+                  }
+                }
+              }
+            }(),
+            ...);
+      }(typename step_at<I>::items{});
     }
   };
   struct advance_and_check {
@@ -816,7 +826,7 @@ class chart {
     for_each_bit<step_count>(active_, active_table, *this, pou, elapsed);
     for (std::size_t v = 0; v < activated_.size(); ++v) {  // the controls of the changed steps' actions
       for (std::uint64_t m = activated_[v] | deactivated_[v]; m != 0; m &= m - 1) {
-        const action_set& mask = step_action_masks<false>[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
+        const action_set& mask = step_action_mask[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
         for (std::size_t w = 0; w < dirty_.size(); ++w) dirty_[w] |= mask[w];
       }
     }
@@ -827,7 +837,9 @@ class chart {
   template <std::size_t Tr>
   static constexpr step_set sources = [] {
     step_set result{};
-    for (const std::size_t s : ends<transition_at<Tr>>::from) set_bit<step_count>(result, s);
+    for (const std::size_t s : ends<transition_at<Tr>>::from) {
+      if (s != detail::npos) set_bit<step_count>(result, s);  // a step not in the chart: reported by `checked`
+    }
     return result;
   }();
 
@@ -879,8 +891,22 @@ class chart {
     }
   }
 
+  // Whether every step a transition names is a step of the chart (if not, `checked` says so).
+  template <std::size_t Tr>
+  static constexpr bool ends_valid = [] {
+    bool ok = true;
+    for (const std::size_t s : ends<transition_at<Tr>>::from) ok = ok && s != detail::npos;
+    for (const std::size_t s : ends<transition_at<Tr>>::to) ok = ok && s != detail::npos;
+    return ok;
+  }();
+
   template <std::size_t Tr>
   void try_fire(POU& pou, bool tip) {
+    if constexpr (ends_valid<Tr>) try_fire_valid<Tr>(pou, tip);
+  }
+
+  template <std::size_t Tr>
+  void try_fire_valid(POU& pou, bool tip) {
     using E = ends<transition_at<Tr>>;
     // Enabled: every source step active (at the start of the scan) and not left by a
     // transition tested before this one; each source's minimum time reached.
@@ -950,7 +976,8 @@ class chart {
     static constexpr std::array<std::string_view, step_count> names = step_names();
     for (std::size_t w = active_.size(); w-- > 0;) {
       if (active_[w] != 0) {
-        text(SFCCurrentStep, names[w * 64 + 63 - static_cast<std::size_t>(std::countl_zero(active_[w]))]);
+        detail::engine_access::name(SFCCurrentStep,
+                                    names[w * 64 + 63 - static_cast<std::size_t>(std::countl_zero(active_[w]))]);
         return;
       }
     }

@@ -9,9 +9,13 @@
 // the implicit variables of a CODESYS chart.
 #pragma once
 
+#include <cstddef>
+#include <string_view>
+
 #include <iecoop/config.hpp>
 #include <iecoop/pou/variables.hpp>
 #include <iecoop/types/elementary.hpp>
+#include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -58,6 +62,30 @@ class step {
 struct action_state {
   read_only<BOOL, detail::engine_access> Q;
   read_only<BOOL, detail::engine_access> A;
+};
+
+/**
+ * A step's name as the chart's SFCCurrentStep gives it: read like a STRING (`STRING<> s =
+ * chart.SFCCurrentStep;`, `chart.SFCCurrentStep == 'FILL'`), kept as a view of the name, so the
+ * chart copies no text when its steps change.
+ */
+class step_name_view {
+ public:
+  /// The name as a STRING.
+  [[nodiscard]] constexpr STRING<> get() const noexcept { return STRING<>(name_); }
+  constexpr operator STRING<>() const noexcept { return get(); }  // NOLINT: reads as a STRING
+  /// The name itself.
+  [[nodiscard]] constexpr std::string_view view() const noexcept { return name_; }
+
+  friend constexpr BOOL operator==(const step_name_view& a, std::string_view b) noexcept { return BOOL(a.name_ == b); }
+  template <std::size_t N>
+  friend constexpr BOOL operator==(const step_name_view& a, const STRING<N>& b) noexcept {
+    return BOOL(a.name_ == b.view());
+  }
+
+ private:
+  friend struct detail::engine_access;
+  std::string_view name_;
 };
 
 }  // namespace iecoop::sfc

@@ -27,6 +27,7 @@
 #include <iecoop/ostream.hpp>
 #include <iecoop/pou/variables.hpp>
 #include <iecoop/runtime/retain.hpp>
+#include <iecoop/sfc/step.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/string.hpp>
@@ -126,6 +127,12 @@ struct StringMaker<iecoop::iec_string<C, N>> {
 template <class T, class Owner>
 struct StringMaker<iecoop::local<T, Owner>> {
   static String convert(const iecoop::local<T, Owner>& v) { return StringMaker<T>::convert(v.get()); }
+};
+template <>
+struct StringMaker<iecoop::sfc::step_name_view> {
+  static String convert(const iecoop::sfc::step_name_view& v) {
+    return StringMaker<iecoop::STRING<>>::convert(v.get());
+  }
 };
 template <class T, class Owner>
 struct StringMaker<iecoop::read_only<T, Owner>> {
