@@ -181,11 +181,6 @@ bool test(POU& pou) {
   }
 }
 
-template <auto Action, class POU>
-void call(POU& pou) {
-  (pou.*Action)();
-}
-
 // --- Structural checks (each names the offending step in its template argument) -------------
 
 template <auto Step>
@@ -226,12 +221,6 @@ consteval void invalid_condition() {
 
 inline constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
-// Per-step state bits.
-inline constexpr std::uint8_t bit_enter = 1;        // activated for the next cycle (codesys) / pending (reset)
-inline constexpr std::uint8_t bit_leave = 2;        // deactivated for the next cycle (codesys) / in this scan
-inline constexpr std::uint8_t bit_activated = 4;    // activated: this scan's actions see it
-inline constexpr std::uint8_t bit_deactivated = 8;  // deactivated: this scan's actions see it
-
 /// The control of one IEC action (IEC 61131-3 ACTION_CONTROL, combined over its associations).
 struct control {
   bool q = false;      // Q of the last scan
@@ -262,9 +251,6 @@ template <class POU, class... Elements>
 class chart {
   using split = detail::split_order<Elements...>;
   using all = typename split::elements;
-
-  template <class E>
-  static constexpr bool is_element = detail::chart_element<E>;
 
  public:
   /// The scan order.
@@ -338,12 +324,10 @@ class chart {
     template <auto... S>
     struct indices<FROM<S...>> {
       static constexpr std::array<std::size_t, sizeof...(S)> value{index_of(static_cast<member>(S))...};
-      static constexpr std::array<member, sizeof...(S)> named{static_cast<member>(S)...};
     };
     template <auto... S>
     struct indices<TO<S...>> {
       static constexpr std::array<std::size_t, sizeof...(S)> value{index_of(static_cast<member>(S))...};
-      static constexpr std::array<member, sizeof...(S)> named{static_cast<member>(S)...};
     };
     static constexpr auto from = indices<typename Tr::from>::value;
     static constexpr auto to = indices<typename Tr::to>::value;
