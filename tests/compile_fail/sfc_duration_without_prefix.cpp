@@ -2,11 +2,10 @@
 // EXPECT-WITHIN: 40
 // A timed qualifier with a duration that is no TIME literal: A_FILL(L, T#30ms) is "T#30ms".
 #include <iecoop/iecoop.hpp>
+
+#include "sfc_chart_fixture.hpp"
 using namespace iecoop;
-struct FB_Chart : function_block<FB_Chart> {
-  BOOL GO;
-  sfc::step INIT, FILL, DRAIN;
-  void A_FILL() {}
+struct FB_Chart : function_block<FB_Chart>, sfc_fixture::tank_variables {
   using P = FB_Chart;
 #ifdef IECOOP_COMPILE_FAIL
   sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,

@@ -2,11 +2,10 @@
 // EXPECT-WITHIN: 40
 // No transition leads to DRAIN.
 #include <iecoop/iecoop.hpp>
+
+#include "sfc_chart_fixture.hpp"
 using namespace iecoop;
-struct FB_Chart : function_block<FB_Chart> {
-  BOOL GO;
-  sfc::step INIT, FILL, DRAIN;
-  void A_FILL() {}
+struct FB_Chart : function_block<FB_Chart>, sfc_fixture::tank_variables {
   using P = FB_Chart;
 #ifdef IECOOP_COMPILE_FAIL
   sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,
@@ -14,10 +13,7 @@ struct FB_Chart : function_block<FB_Chart> {
              sfc::STEP<&P::DRAIN>, sfc::TRANSITION<sfc::FROM<&P::DRAIN>, sfc::TO<&P::INIT>, true>>
       chart;
 #else
-  sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,
-             sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>, sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, &P::GO>,
-             sfc::STEP<&P::DRAIN>, sfc::TRANSITION<sfc::FROM<&P::DRAIN>, sfc::TO<&P::INIT>, true>>
-      chart;
+  sfc_fixture::tank_chart<P> chart;
 #endif
   void body() { chart(*this); }
 };
