@@ -2,7 +2,6 @@
 // Structured Text: a PROGRAM whose cells are a STRUCT of the standard blocks.
 #include "workload.hpp"
 
-#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -30,7 +29,7 @@ struct CELL {
 //   CYC, NTON, NCTU, NEDGE, ACC, PH : INT;
 // END_VAR
 struct WORKLOAD_PRG : program<WORKLOAD_PRG> {
-  std::array<CELL, 1000> CELLS;
+  ARRAY<CELL, 0, 999> CELLS;
   INT CYC;
   INT NTON;
   INT NCTU;
@@ -44,7 +43,7 @@ struct WORKLOAD_PRG : program<WORKLOAD_PRG> {
     NCTU = 0;                         // NCTU := 0;
     NEDGE = 0;                        // NEDGE := 0;
     for (INT K = 0; K <= 999; ++K) {  // FOR K := 0 TO 999 DO
-      CELL& cell = CELLS[static_cast<std::size_t>(K)];
+      CELL& cell = CELLS[K];
       PH = (CYC + K) % 20;                              //   PH := (CYC + K) MOD 20;
       cell.T("IN"_ = PH < 15, "PT"_ = "T#50ms"_iec);    //   CELLS[K].T(IN := PH < 15, PT := T#50ms);
       if (cell.T.Q) NTON = NTON + 1;                    //   IF CELLS[K].T.Q THEN NTON := NTON + 1; END_IF;

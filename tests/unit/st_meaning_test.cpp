@@ -166,6 +166,25 @@ TEST_SUITE("ST meaning: integer expressions compute in the register width") {
     CHECK(r == 32768.0f);
   }
 
+  TEST_CASE("an expression assigned to a variable that exists is cut as one it initialises") {
+    // (Assignment stores the register's low bits directly, integer<>::operator=(intermediate).)
+    INT i = opaque(INT(32767));
+    DINT d = 0;
+    d = i + 1;  // d := i + 1;   the register's 32768
+    CHECK(d == 32768);
+    i = i + 1;  // i := i + 1;   the INT's 16 bits
+    CHECK(i == -32768);
+    const SINT s = opaque(SINT(127));
+    INT j = 0;
+    j = s + 1;  // j := s + 1;   128 in the register, and in the INT
+    CHECK(j == 128);
+    UINT u = 0;
+    u = opaque(USINT(255)) + 1;  // u := usi + 1;   256
+    CHECK(u == 256);
+    u = u - 257;  // u := u - 257;   -1 in the register, 65535 in the UINT
+    CHECK(u == 65535);
+  }
+
   TEST_CASE("mixed types meet in the wider type, and the result is a BOOL in comparisons") {
     const SINT s = -1;
     const INT i = 300;

@@ -53,6 +53,14 @@ template <std::floating_point Rep>
 class real;
 
 namespace detail {
+/// Whether the integer operators take their operands by reference (Clang) or by value (GCC and
+/// the others): see integer<>::operand.
+#if defined(__clang__)
+inline constexpr bool operands_by_reference = true;
+#else
+inline constexpr bool operands_by_reference = false;
+#endif
+
 template <class T>
 struct is_integer : std::false_type {};
 template <class Rep, integer_kind Kind>
@@ -552,6 +560,17 @@ class integer {
   using rep = Rep;
   static constexpr integer_kind kind = Kind;
 
+ private:
+  // How the operators take their operands: by value for GCC, by reference for Clang. Either
+  // way the same overloads match; what differs is the code. Clang copies a trivially
+  // copyable class with a memcpy whose load LLVM 14 and 16 leave without type-based alias
+  // information (a loop computing with a program's INT variables then reloads them after every
+  // store of a block); GCC 12 turns a reference to a member into "the object's address plus
+  // an offset" before inlining, which its alias analysis cannot separate from the program's
+  // other variables. bench/ratio.sh measures both (docs/performance.md).
+  using operand = std::conditional_t<detail::operands_by_reference, const integer&, integer>;
+
+ public:
   constexpr integer() noexcept = default;
 
   /// From a C++ integer whose every value fits: implicit, at run time too.
@@ -597,6 +616,16 @@ class integer {
                                    detail::spelled_iec_name_t<integer>>();
   }
 
+  /// An expression assigned to the variable (`i := i + 1;`): the register's low bits, stored as
+  /// the scalar. (Through a temporary INT and its copy, Clang would copy with a memcpy, whose
+  /// store LLVM 14 and 16 leave without type-based alias information.)
+  template <class T>
+    requires(detail::is_integer<T>::value && detail::widens_implicitly<T, integer>)
+  constexpr integer& operator=(const intermediate<T>& result) noexcept {
+    value_ = static_cast<Rep>(result.value());
+    return *this;
+  }
+
   /// The value as its C++ integer type.
   [[nodiscard]] constexpr Rep value() const noexcept { return value_; }
 
@@ -608,38 +637,38 @@ class integer {
   }
 
   // Arithmetic: the intermediate result in the target's registers (see intermediate<T>).
-  friend constexpr intermediate<integer> operator+(integer a, integer b) noexcept {
+  friend constexpr intermediate<integer> operator+(operand a, operand b) noexcept {
     return reg(math::add(in_reg(a), in_reg(b)));
   }
-  friend constexpr intermediate<integer> operator-(integer a, integer b) noexcept {
+  friend constexpr intermediate<integer> operator-(operand a, operand b) noexcept {
     return reg(math::sub(in_reg(a), in_reg(b)));
   }
-  friend constexpr intermediate<integer> operator*(integer a, integer b) noexcept {
+  friend constexpr intermediate<integer> operator*(operand a, operand b) noexcept {
     return reg(math::mul(in_reg(a), in_reg(b)));
   }
-  friend constexpr intermediate<integer> operator/(integer a, integer b) {
+  friend constexpr intermediate<integer> operator/(operand a, operand b) {
     if (b.value_ == 0) return zero_after_division_fault();
     return reg(math::div(in_reg(a), in_reg(b)));
   }
-  friend constexpr intermediate<integer> operator%(integer a, integer b) {
+  friend constexpr intermediate<integer> operator%(operand a, operand b) {
     if (b.value_ == 0) return zero_after_division_fault();
     return reg(math::mod(in_reg(a), in_reg(b)));
   }
-  friend constexpr intermediate<integer> operator-(integer a) noexcept { return reg(math::neg(in_reg(a))); }
-  friend constexpr integer operator+(integer a) noexcept { return a; }
+  friend constexpr intermediate<integer> operator-(operand a) noexcept { return reg(math::neg(in_reg(a))); }
+  friend constexpr integer operator+(operand a) noexcept { return a; }
 
   // Bitwise: ST's AND, OR, XOR, NOT on bit strings (and, as CODESYS allows, integers), in
   // the type's own width.
-  friend constexpr integer operator&(integer a, integer b) noexcept { return static_cast<Rep>(a.value_ & b.value_); }
-  friend constexpr integer operator|(integer a, integer b) noexcept { return static_cast<Rep>(a.value_ | b.value_); }
-  friend constexpr integer operator^(integer a, integer b) noexcept { return static_cast<Rep>(a.value_ ^ b.value_); }
-  friend constexpr integer operator~(integer a) noexcept { return static_cast<Rep>(~a.value_); }
+  friend constexpr integer operator&(operand a, operand b) noexcept { return static_cast<Rep>(a.value_ & b.value_); }
+  friend constexpr integer operator|(operand a, operand b) noexcept { return static_cast<Rep>(a.value_ | b.value_); }
+  friend constexpr integer operator^(operand a, operand b) noexcept { return static_cast<Rep>(a.value_ ^ b.value_); }
+  friend constexpr integer operator~(operand a) noexcept { return static_cast<Rep>(~a.value_); }
 
-  constexpr integer& operator+=(integer b) noexcept { return *this = *this + b; }
-  constexpr integer& operator-=(integer b) noexcept { return *this = *this - b; }
-  constexpr integer& operator*=(integer b) noexcept { return *this = *this * b; }
-  constexpr integer& operator/=(integer b) { return *this = *this / b; }
-  constexpr integer& operator%=(integer b) { return *this = *this % b; }
+  constexpr integer& operator+=(operand b) noexcept { return *this = *this + b; }
+  constexpr integer& operator-=(operand b) noexcept { return *this = *this - b; }
+  constexpr integer& operator*=(operand b) noexcept { return *this = *this * b; }
+  constexpr integer& operator/=(operand b) { return *this = *this / b; }
+  constexpr integer& operator%=(operand b) { return *this = *this % b; }
   // `i += v` with an intermediate result or a value of another IEC type is ST's
   // `i := i + v`: combined in the register first (`i /= a * b` divides by the whole
   // product), and assigned as any result is (a wider one is rejected, as in ST).
@@ -699,9 +728,9 @@ class integer {
   constexpr void operator%=(const V&) {
     detail::no_implicit_conversion<detail::spelled_iec_name_t<V>, detail::spelled_iec_name_t<integer>>();
   }
-  constexpr integer& operator&=(integer b) noexcept { return *this = *this & b; }
-  constexpr integer& operator|=(integer b) noexcept { return *this = *this | b; }
-  constexpr integer& operator^=(integer b) noexcept { return *this = *this ^ b; }
+  constexpr integer& operator&=(operand b) noexcept { return *this = *this & b; }
+  constexpr integer& operator|=(operand b) noexcept { return *this = *this | b; }
+  constexpr integer& operator^=(operand b) noexcept { return *this = *this ^ b; }
   constexpr integer& operator++() noexcept { return *this += integer(Rep{1}); }
   constexpr integer& operator--() noexcept { return *this -= integer(Rep{1}); }
   constexpr integer operator++(int) noexcept {
@@ -717,17 +746,17 @@ class integer {
 
   // Comparison with the same type (and, through implicit widening, with narrower types):
   // a BOOL, as in ST.
-  friend constexpr BOOL operator==(integer a, integer b) noexcept { return BOOL(a.value_ == b.value_); }
-  friend constexpr BOOL operator!=(integer a, integer b) noexcept { return BOOL(a.value_ != b.value_); }
-  friend constexpr BOOL operator<(integer a, integer b) noexcept { return BOOL(a.value_ < b.value_); }
-  friend constexpr BOOL operator<=(integer a, integer b) noexcept { return BOOL(a.value_ <= b.value_); }
-  friend constexpr BOOL operator>(integer a, integer b) noexcept { return BOOL(a.value_ > b.value_); }
-  friend constexpr BOOL operator>=(integer a, integer b) noexcept { return BOOL(a.value_ >= b.value_); }
-  friend constexpr std::strong_ordering operator<=>(integer a, integer b) noexcept { return a.value_ <=> b.value_; }
+  friend constexpr BOOL operator==(operand a, operand b) noexcept { return BOOL(a.value_ == b.value_); }
+  friend constexpr BOOL operator!=(operand a, operand b) noexcept { return BOOL(a.value_ != b.value_); }
+  friend constexpr BOOL operator<(operand a, operand b) noexcept { return BOOL(a.value_ < b.value_); }
+  friend constexpr BOOL operator<=(operand a, operand b) noexcept { return BOOL(a.value_ <= b.value_); }
+  friend constexpr BOOL operator>(operand a, operand b) noexcept { return BOOL(a.value_ > b.value_); }
+  friend constexpr BOOL operator>=(operand a, operand b) noexcept { return BOOL(a.value_ >= b.value_); }
+  friend constexpr std::strong_ordering operator<=>(operand a, operand b) noexcept { return a.value_ <=> b.value_; }
 
  private:
   using math = detail::register_math<detail::register_t<integer>>;
-  static constexpr detail::register_t<integer> in_reg(integer x) noexcept { return detail::in_register<integer>(x); }
+  static constexpr detail::register_t<integer> in_reg(operand x) noexcept { return detail::in_register<integer>(x); }
   static constexpr intermediate<integer> reg(detail::register_t<integer> r) noexcept {
     return intermediate<integer>::from_register(r);
   }

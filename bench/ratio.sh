@@ -1,0 +1,83 @@
+#!/bin/sh
+# The zero-overhead figure on several compilers: the workload's scan with iecoop against its
+# hand-written twin (bench/workload.hpp), in time and in instructions.
+#
+#   sh bench/ratio.sh [-p PROCESSES] [-r REPS] [COMPILER...]
+#
+# For each compiler (default: g++ clang++-14 clang++-16) a Release build of the two programs it
+# needs in build/ratio-<compiler>; then PROCESSES runs (default 5) of iecoop_workload_ratio with
+# REPS repetitions each (default 201), the compilers taking turns, so that the machine's slow
+# spells fall on all of them; then callgrind's instructions per scan of each side
+# (bench/callgrind.sh). Prints a Markdown table: the median over the processes of each
+# process's median ratio, the range of those medians, the median of the processes' 10th and
+# 90th percentiles of the repetitions' ratios, and the instruction ratios (also against the
+# hand-written variant that does not store the blocks' inputs, workload_minimal.cpp).
+# Installs what it needs (g++, clang-14, clang-16, Google Benchmark, valgrind) first.
+set -eu
+cd "$(dirname "$0")/.."
+. tools/require_packages.sh
+
+processes=5
+reps=201
+while getopts p:r: option; do
+  case $option in
+    p) processes=$OPTARG ;;
+    r) reps=$OPTARG ;;
+    *) echo "usage: sh bench/ratio.sh [-p PROCESSES] [-r REPS] [COMPILER...]" >&2; exit 2 ;;
+  esac
+done
+shift $((OPTIND - 1))
+[ $# -gt 0 ] || set -- g++ clang++-14 clang++-16
+iecoop_require_packages cmake make g++ clang-14 clang-16 libbenchmark-dev valgrind
+
+jobs=$(nproc 2>/dev/null || echo 2)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+for compiler in "$@"; do
+  dir=build/ratio-$compiler
+  echo "== ratio: building with $compiler in $dir" >&2
+  cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_BUILD_TYPE=Release -DIECOOP_BUILD_BENCH=ON \
+    -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_EXAMPLES=OFF -DIECOOP_BUILD_TOOLS=OFF -DIECOOP_BUILD_CHECK=OFF \
+    -DIECOOP_INSTALL=OFF >/dev/null
+  cmake --build "$dir" -j "$jobs" --target iecoop_workload_ratio iecoop_bench_count >/dev/null
+done
+
+# The processes, the compilers taking turns.
+p=1
+while [ "$p" -le "$processes" ]; do
+  for compiler in "$@"; do
+    echo "== ratio: process $p of $processes, $compiler" >&2
+    "build/ratio-$compiler/bench/iecoop_workload_ratio" --reps "$reps" >>"$work/$compiler.runs"
+  done
+  p=$((p + 1))
+done
+
+# The median of a column of numbers (stdin).
+median() {
+  sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
+
+echo "| compiler | time, iecoop / twin: median of $processes processes (their range) | 10th–90th percentile of the repetitions | ns per scan, iecoop / twin | instructions per scan, iecoop / twin | instructions, iecoop / twin | instructions, iecoop / twin without stored inputs |"
+echo "|---|---:|---:|---:|---:|---:|---:|"
+for compiler in "$@"; do
+  runs=$work/$compiler.runs
+  ratio=$(awk '{ print $2 }' "$runs" | median)
+  low=$(awk '{ print $2 }' "$runs" | sort -g | head -n 1)
+  high=$(awk '{ print $2 }' "$runs" | sort -g | tail -n 1)
+  p10=$(awk '{ print $4 }' "$runs" | median)
+  p90=$(awk '{ print $6 }' "$runs" | median)
+  iecoop_ns=$(awk '{ print $8 }' "$runs" | median)
+  twin_ns=$(awk '{ print $10 }' "$runs" | median)
+  counts=$(sh bench/callgrind.sh "build/ratio-$compiler/bench/iecoop_bench_count" workload_iecoop workload_handwritten \
+    workload_handwritten_minimal)
+  iecoop_ins=$(echo "$counts" | awk '$1 == "workload_iecoop" { print $2 }')
+  twin_ins=$(echo "$counts" | awk '$1 == "workload_handwritten" { print $2 }')
+  minimal_ins=$(echo "$counts" | awk '$1 == "workload_handwritten_minimal" { print $2 }')
+  version=$("$compiler" --version | head -n 1)
+  awk -v c="$version" -v r="$ratio" -v lo="$low" -v hi="$high" -v p10="$p10" -v p90="$p90" -v a="$iecoop_ns" \
+    -v b="$twin_ns" -v ia="$iecoop_ins" -v ib="$twin_ins" -v im="$minimal_ins" 'BEGIN {
+      printf "| %s | %.3f (%.3f–%.3f) | %.3f–%.3f | %.0f / %.0f | %.0f / %.0f | %.3f | %.3f |\n",
+        c, r, lo, hi, p10, p90, a, b, ia, ib, ia / ib, ia / im
+    }'
+done
