@@ -616,11 +616,12 @@ class integer {
                                    detail::spelled_iec_name_t<integer>>();
   }
 
-  /// An expression assigned to the variable (`i := i + 1;`): the register's low bits, stored as
-  /// the scalar. (Through a temporary INT and its copy, Clang would copy with a memcpy, whose
-  /// store LLVM 14 and 16 leave without type-based alias information.)
+  /// An expression assigned to the variable (`i := i + 1;`) on Clang: the register's low bits,
+  /// stored as the scalar. (Through a temporary INT and its copy, Clang copies with a memcpy,
+  /// whose store LLVM 14 and 16 leave without type-based alias information. GCC does better
+  /// without this: with it, it no longer vectorises a FOR loop summing an ARRAY.)
   template <class T>
-    requires(detail::is_integer<T>::value && detail::widens_implicitly<T, integer>)
+    requires(detail::operands_by_reference && detail::is_integer<T>::value && detail::widens_implicitly<T, integer>)
   constexpr integer& operator=(const intermediate<T>& result) noexcept {
     value_ = static_cast<Rep>(result.value());
     return *this;
