@@ -1,14 +1,14 @@
 #!/bin/sh
 # Builds and runs iecoop's whole test suite, the way CI does:
 #   0. the layout of the code against .clang-format (sh tools/format.sh --check),
-#   1. clang++ with AddressSanitizer and UndefinedBehaviorSanitizer (-O1), which also builds the
+#   1. clang++ with AddressSanitizer and UndefinedBehaviorSanitizer (-O0), which also builds the
 #      libFuzzer targets of tests/fuzz/ and fuzzes each for 5 s (CTest label `fuzz`;
 #      docs/reliability.md),
 #   2. g++ Release (-O3, the build the benchmarks are measured in: GCC warns of some things,
 #      -Warray-bounds, -Wrestrict, only when it optimises),
 # both with -Wall -Wextra -Wpedantic -Werror on iecoop's own code. Each build runs the unit
-# tests (and the test kit's, with its JUnit reports read by xmllint), the compile-fail checks,
-# the examples and iecoop-check's tests; the g++ build also builds the consumer projects
+# tests (and the test kit's, with its JUnit reports read by xmllint), the compile-fail checks
+# and the examples; the g++ build also runs iecoop-check's tests, builds the consumer projects
 # (find_package, add_subdirectory, FetchContent, each with unit tests written with the test
 # kit), checks every example clean with iecoop-check, builds the benchmarks and compiles every
 # header on its own with -fno-exceptions -fno-rtti.
