@@ -53,22 +53,28 @@ while [ "$p" -le "$processes" ]; do
   p=$((p + 1))
 done
 
-# The median of a column of numbers (stdin).
+# field <file> <n>: field n of every process's line ("ratio R p10 A p90 B iecoop_ns X twin_ns Y
+# ..."), sorted.
+field() {
+  awk -v n="$2" '{ print $n }' "$1" | sort -g
+}
+
+# The median of sorted numbers (stdin).
 median() {
-  sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+  awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 
 echo "| compiler | time, iecoop / twin: median of $processes processes (their range) | 10th–90th percentile of the repetitions | ns per scan, iecoop / twin | instructions per scan, iecoop / twin | instructions, iecoop / twin | instructions, iecoop / twin without stored inputs |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
 for compiler in "$@"; do
   runs=$work/$compiler.runs
-  ratio=$(awk '{ print $2 }' "$runs" | median)
-  low=$(awk '{ print $2 }' "$runs" | sort -g | head -n 1)
-  high=$(awk '{ print $2 }' "$runs" | sort -g | tail -n 1)
-  p10=$(awk '{ print $4 }' "$runs" | median)
-  p90=$(awk '{ print $6 }' "$runs" | median)
-  iecoop_ns=$(awk '{ print $8 }' "$runs" | median)
-  twin_ns=$(awk '{ print $10 }' "$runs" | median)
+  ratio=$(field "$runs" 2 | median)
+  low=$(field "$runs" 2 | head -n 1)
+  high=$(field "$runs" 2 | tail -n 1)
+  p10=$(field "$runs" 4 | median)
+  p90=$(field "$runs" 6 | median)
+  iecoop_ns=$(field "$runs" 8 | median)
+  twin_ns=$(field "$runs" 10 | median)
   counts=$(sh bench/callgrind.sh "build/ratio-$compiler/bench/iecoop_bench_count" workload_iecoop workload_handwritten \
     workload_handwritten_minimal)
   iecoop_ins=$(echo "$counts" | awk '$1 == "workload_iecoop" { print $2 }')
