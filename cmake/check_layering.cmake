@@ -9,7 +9,7 @@
 #   runtime/                         6
 #   trace/                           7  (recorder, writers, watch list: they observe the runtime)
 #   iecoop.hpp, trace.hpp, fmt.hpp,  8  (the umbrella and the integrations)
-#   ostream.hpp
+#   ostream.hpp, exchange/               (exchange/: Modbus and MQTT, over the image and the trace's channels)
 #   testing/, testing.hpp            9  (the test kit: on doctest, over everything above)
 # A detail/ header is shared machinery: it takes the layer of the highest header it includes
 # (at least 1), and may build on types/ but on nothing above.
@@ -26,6 +26,7 @@ set(rank_sfc 4)
 set(rank_io 5)
 set(rank_runtime 6)
 set(rank_trace 7)
+set(rank_exchange 8)
 set(rank_testing 9)
 set(detail_ceiling 2)
 

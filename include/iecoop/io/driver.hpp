@@ -9,6 +9,7 @@
 //   no_io           does nothing (the default)
 //   simulated_io<>  a simulated field for tests: set inputs, read back outputs, count cycles
 //   callback_io     two function pointers and a context pointer, for real hardware
+//   io_chain        several drivers as one: a local I/O card, a fieldbus and a Modbus server, say
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <tuple>
 #include <type_traits>
 
 #include <iecoop/config.hpp>
@@ -189,9 +191,36 @@ class simulated_io {
   std::size_t writes_ = 0;
 };
 
+/**
+ * Several drivers as one, each over the whole areas: read_inputs() calls the drivers' in the
+ * order given (where two write the same input bytes, the last one wins), write_outputs() calls
+ * them in the same order. It refers to the drivers, which must outlive it.
+ *
+ *     io_chain io{local_card, modbus_server, remote_io};
+ *     plc.connect(io);
+ */
+template <IoDriver... D>
+class io_chain {
+  static_assert(sizeof...(D) > 0, "iecoop: io_chain chains at least one driver; give the drivers, io_chain{a, b}");
+
+ public:
+  explicit constexpr io_chain(D&... drivers) noexcept : drivers_{&drivers...} {}
+
+  void read_inputs(std::span<std::byte> inputs) {
+    std::apply([&](D*... d) { (d->read_inputs(inputs), ...); }, drivers_);
+  }
+  void write_outputs(std::span<const std::byte> outputs) {
+    std::apply([&](D*... d) { (d->write_outputs(outputs), ...); }, drivers_);
+  }
+
+ private:
+  std::tuple<D*...> drivers_;
+};
+
 static_assert(IoDriver<no_io>);
 static_assert(IoDriver<callback_io>);
 static_assert(IoDriver<simulated_io<>>);
+static_assert(IoDriver<io_chain<no_io, callback_io>>);
 
 }  // namespace iecoop
 

@@ -1,0 +1,501 @@
+// SPDX-License-Identifier: MIT
+// iecoop/exchange/modbus_server.hpp — a Modbus TCP server (slave) on the process image, as CODESYS's
+// "Modbus TCP Slave Device": an HMI or SCADA writes holding registers and coils, which the
+// program reads as inputs (%IW, %IX), and reads input registers and discrete inputs, which the
+// program writes as outputs (%QW, %QX). Served by libmodbus (Debian: libmodbus-dev) in a
+// thread of its own; link the CMake target iecoop::modbus.
+//
+//     modbus_server<> hmi{{.port = 1502, .holding_registers = 16, .input_registers = 16}};
+//     if (const char* error = hmi.start()) { std::puts(error); return 1; }
+//     plc.connect(hmi);                            // or io_chain{card, hmi}
+//
+// Consistency, as the process image's: a task cycle sees the holding registers as they were
+// at its start (a client's multi-register write is all there or not at all), and the clients
+// read the outputs as one cycle left them at its end (a DINT in two input registers is never
+// half of one cycle and half of another). The server thread and the cycles exchange
+// snapshots through triple buffers: the cycle never waits for the network, and a slow, broken
+// or malicious client delays no task. For Linux and other POSIX systems; not part of
+// <iecoop/iecoop.hpp>.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <span>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <vector>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <iecoop/config.hpp>
+#include <iecoop/exchange/image_window.hpp>
+#include <iecoop/exchange/modbus_library.hpp>
+#include <iecoop/exchange/triple_buffer.hpp>
+#include <iecoop/io/address.hpp>
+#include <iecoop/io/process_image.hpp>
+#include <iecoop/types/time.hpp>
+
+#include <iecoop/detail/push_macros.hpp>
+
+namespace iecoop {
+
+/**
+ * The configuration of a Modbus TCP server, as CODESYS's Modbus TCP Slave Device's "General"
+ * tab gives it. Addresses are the process image's (checked by start()); `*_start` are the
+ * Modbus data model's first addresses (PDU addressing, from 0: mbpoll's `-r 1` is 0).
+ */
+struct modbus_server_config {
+  std::string
+      bind_address{};  ///< the local address to listen on; empty: every address (CODESYS: not bound to an adapter)
+  std::uint16_t port = 502;  ///< 0: a free port the system chooses (port() tells)
+  /// Holding registers (FC 3, 6, 16, 22, 23): written, and read back, by the clients; the
+  /// program reads them at %IW (CODESYS: "Holding registers (%IW)").
+  std::uint16_t holding_registers = 10;
+  std::string holding_image = "%IW0";
+  std::uint16_t holding_start = 0;
+  /// Input registers (FC 4): read by the clients; the program writes them at %QW.
+  std::uint16_t input_registers = 10;
+  std::string input_image = "%QW0";
+  std::uint16_t input_start = 0;
+  /// Coils (FC 1, 5, 15) and discrete inputs (FC 2): 0 (CODESYS's default) addresses the bits
+  /// of the registers' data — coil n is bit n % 16 of holding register n / 16, discrete input n
+  /// likewise of the input registers; a count gives them a bit area of their own ("Discrete
+  /// Bit Areas"): coils at %IX, discrete inputs at %QX.
+  std::uint16_t coils = 0;
+  std::string coil_image = "%IX0.0";
+  std::uint16_t coil_start = 0;
+  std::uint16_t discrete_inputs = 0;
+  std::string discrete_image = "%QX0.0";
+  std::uint16_t discrete_start = 0;
+  /// CODESYS's "Watchdog": when no request has been answered without exception for this long,
+  /// the holding registers and coils (what the program reads) go to 0. 0: off.
+  LTIME watchdog{0};
+  /// How many clients may be connected at once; one more is refused (closed at once).
+  int max_clients = 8;
+  /// A request must arrive in full within this of its first byte, and a reply must leave
+  /// within it; otherwise the connection is closed (a stalled or slow client).
+  LTIME client_timeout{500'000'000};
+};
+
+/// What a Modbus server did since start(); read any time, from any thread.
+struct modbus_server_statistics {
+  std::uint64_t requests = 0;           ///< answered, with data or with an exception
+  std::uint64_t exceptions = 0;         ///< answered with an exception (illegal function, address, value)
+  std::uint64_t bad_requests = 0;       ///< broken off (malformed, incomplete in time); the connection was closed
+  std::uint64_t connections = 0;        ///< accepted
+  std::uint64_t refused = 0;            ///< refused: max_clients were connected
+  std::uint64_t watchdog_expiries = 0;  ///< times the watchdog set the holding data to 0
+  std::uint32_t clients = 0;            ///< connected now
+};
+
+/**
+ * A Modbus TCP server on the process image `Image`, and the I/O driver that connects it to the
+ * task cycles (IoDriver: read_inputs latches what the clients wrote, write_outputs publishes
+ * what they read). Not copyable; stop() (or the destructor) ends its thread.
+ */
+template <class Image = default_process_image>
+class modbus_server {
+  static_assert(detail::is_process_image<Image>::value,
+                "iecoop: modbus_server<Image> serves a process_image<...>; give the application's image");
+  using input_area = std::array<std::byte, Image::input_bytes>;
+  using output_area = std::array<std::byte, Image::output_bytes>;
+
+ public:
+  using image_type = Image;
+
+  explicit modbus_server(modbus_server_config config = {}) : config_(std::move(config)) {}
+  modbus_server(const modbus_server&) = delete;
+  modbus_server& operator=(const modbus_server&) = delete;
+  ~modbus_server() { stop(); }
+
+  /// Checks the configuration, listens and starts serving. nullptr when it serves; otherwise
+  /// why not ("iecoop: ..."), and it does not serve. Call it once (again after stop()).
+  [[nodiscard]] const char* start() {
+    if (thread_.joinable()) return "iecoop: the Modbus server is serving already; stop() it first";
+    if (const char* error = make_windows()) return error;
+    if (const char* error = listen()) return error;
+    stop_requested_.store(false);
+    thread_ = std::thread([this] { serve(); });
+    return nullptr;
+  }
+
+  /// Stops serving: closes every connection and the listening socket. What the program reads
+  /// keeps the clients' last values.
+  void stop() noexcept {
+    if (thread_.joinable()) {
+      stop_requested_.store(true);
+      const char wake = 1;
+      [[maybe_unused]] const ssize_t written = ::write(wake_[1], &wake, 1);
+      thread_.join();
+    }
+    close_all();
+  }
+
+  [[nodiscard]] bool serving() const noexcept { return thread_.joinable(); }
+
+  /// The port it listens on (the one the system chose, for port 0).
+  [[nodiscard]] std::uint16_t port() const noexcept { return port_; }
+
+  [[nodiscard]] modbus_server_statistics statistics() const noexcept {
+    modbus_server_statistics s;
+    s.requests = requests_.load(std::memory_order_relaxed);
+    s.exceptions = exceptions_.load(std::memory_order_relaxed);
+    s.bad_requests = bad_requests_.load(std::memory_order_relaxed);
+    s.connections = connections_.load(std::memory_order_relaxed);
+    s.refused = refused_.load(std::memory_order_relaxed);
+    s.watchdog_expiries = watchdog_expiries_.load(std::memory_order_relaxed);
+    s.clients = clients_.load(std::memory_order_relaxed);
+    return s;
+  }
+
+  [[nodiscard]] const modbus_server_config& config() const noexcept { return config_; }
+
+  /// IoDriver: the cycle's start. The holding registers and coils as the clients last wrote
+  /// them, into their %I windows (the rest of the inputs is left alone).
+  void read_inputs(std::span<std::byte> inputs) noexcept {
+    if (inputs.size() < Image::input_bytes) return;
+    from_clients_.refresh();
+    const input_area& latest = from_clients_.read_slot();
+    copy_window(inputs, latest, holding_window_);
+    copy_window(inputs, latest, coil_window_);
+  }
+
+  /// IoDriver: the cycle's end. The %Q windows of the input registers and discrete inputs, for
+  /// the clients' next reads.
+  void write_outputs(std::span<const std::byte> outputs) noexcept {
+    if (outputs.size() < Image::output_bytes) return;
+    output_area& slot = to_clients_.write_slot();
+    copy_window(slot, outputs, input_window_);
+    copy_window(slot, outputs, discrete_window_);
+    to_clients_.publish();
+  }
+
+ private:
+  using clock = std::chrono::steady_clock;
+
+  [[nodiscard]] bool shared_bits() const noexcept { return config_.coils == 0; }
+  [[nodiscard]] bool shared_discretes() const noexcept { return config_.discrete_inputs == 0; }
+
+  // The image windows, checked against the image.
+  const char* make_windows() noexcept {
+    const window_parse holding = register_window(config_.holding_image, config_.holding_registers, io_area::input,
+                                                 Image::mode, Image::input_bytes);
+    if (!holding) return holding.error;
+    const window_parse input = register_window(config_.input_image, config_.input_registers, io_area::output,
+                                               Image::mode, Image::output_bytes);
+    if (!input) return input.error;
+    holding_window_ = *holding;
+    input_window_ = *input;
+    coil_window_ = {};
+    discrete_window_ = {};
+    if (!shared_bits()) {
+      const window_parse coil =
+          bit_window(config_.coil_image, config_.coils, io_area::input, Image::mode, Image::input_bytes);
+      if (!coil) return coil.error;
+      if (coil.window.overlaps(holding_window_)) {
+        return "iecoop: the coils' bits overlap the holding registers' words; give them bits of their own, or 0 "
+               "coils to address the registers' bits";
+      }
+      coil_window_ = *coil;
+    }
+    if (!shared_discretes()) {
+      const window_parse discrete = bit_window(config_.discrete_image, config_.discrete_inputs, io_area::output,
+                                               Image::mode, Image::output_bytes);
+      if (!discrete) return discrete.error;
+      if (discrete.window.overlaps(input_window_)) {
+        return "iecoop: the discrete inputs' bits overlap the input registers' words; give them bits of their own, "
+               "or 0 discrete inputs to address the registers' bits";
+      }
+      discrete_window_ = *discrete;
+    }
+    return nullptr;
+  }
+
+  // The context, the data model and the listening socket.
+  const char* listen() {
+    close_all();
+    in_addr parsed{};
+    if (!config_.bind_address.empty() && ::inet_pton(AF_INET, config_.bind_address.c_str(), &parsed) != 1) {
+      return "iecoop: bind_address is no IPv4 address; give one such as 127.0.0.1, or none to listen on every address";
+    }
+    context_.reset(modbus_new_tcp(config_.bind_address.empty() ? nullptr : config_.bind_address.c_str(), config_.port));
+    if (!context_) return "iecoop: libmodbus could not make a TCP context; check bind_address (an IPv4 address)";
+    const int bits = shared_bits() ? config_.holding_registers * 16 : config_.coils;
+    const int input_bits = shared_discretes() ? config_.input_registers * 16 : config_.discrete_inputs;
+    mapping_.reset(modbus_mapping_new_start_address(
+        config_.coil_start, static_cast<unsigned>(bits), config_.discrete_start, static_cast<unsigned>(input_bits),
+        config_.holding_start, config_.holding_registers, config_.input_start, config_.input_registers));
+    if (!mapping_) return "iecoop: libmodbus could not allocate the server's data model";
+    listen_socket_ = modbus_tcp_listen(context_.get(), config_.max_clients);
+    if (listen_socket_ < 0) {
+      std::snprintf(error_text_, sizeof error_text_, "iecoop: the Modbus server cannot listen on port %u: %s",
+                    static_cast<unsigned>(config_.port), std::strerror(errno));
+      close_all();
+      return error_text_;
+    }
+    sockaddr_in bound{};
+    socklen_t length = sizeof bound;
+    ::getsockname(listen_socket_, reinterpret_cast<sockaddr*>(&bound), &length);
+    port_ = ntohs(bound.sin_port);
+    if (::pipe(wake_) != 0) {
+      close_all();
+      return "iecoop: the Modbus server could not make its wake-up pipe";
+    }
+    detail::set_modbus_timeout(context_.get(), &modbus_set_byte_timeout, config_.client_timeout);
+    // What the clients read starts as the outputs published so far (all 0 before the first cycle).
+    to_clients_.refresh();
+    load_outputs(to_clients_.read_slot());
+    last_valid_ = clock::now();
+    zeroed_ = false;
+    return nullptr;
+  }
+
+  void close_all() noexcept {
+    for (const int client : client_sockets_) ::close(client);
+    client_sockets_.clear();
+    clients_.store(0);
+    if (listen_socket_ >= 0) ::close(listen_socket_);
+    listen_socket_ = -1;
+    for (int& end : wake_) {
+      if (end >= 0) ::close(end);
+      end = -1;
+    }
+    mapping_.reset();
+    context_.reset();
+  }
+
+  // The server thread.
+  void serve() {
+    std::vector<pollfd> polled;
+    polled.reserve(static_cast<std::size_t>(config_.max_clients) + 2);
+    while (!stop_requested_.load()) {
+      polled.clear();
+      polled.push_back({wake_[0], POLLIN, 0});
+      polled.push_back({listen_socket_, POLLIN, 0});
+      for (const int client : client_sockets_) polled.push_back({client, POLLIN, 0});
+      const int ready = ::poll(polled.data(), polled.size(), poll_timeout_ms());
+      check_watchdog();
+      if (ready <= 0) continue;
+      if ((polled[0].revents & POLLIN) != 0) break;
+      for (std::size_t i = 2; i < polled.size(); ++i) {
+        if (polled[i].revents != 0) serve_client(polled[i].fd);
+      }
+      if ((polled[1].revents & POLLIN) != 0) accept_client();
+    }
+  }
+
+  [[nodiscard]] int poll_timeout_ms() const noexcept {
+    if (config_.watchdog.count() == 0 || zeroed_) return -1;
+    const auto due = last_valid_ + std::chrono::nanoseconds(config_.watchdog.count());
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(due - clock::now()).count();
+    return static_cast<int>(std::clamp<long long>(left + 1, 0, 1000));
+  }
+
+  void accept_client() {
+    const int client = ::accept(listen_socket_, nullptr, nullptr);
+    if (client < 0) return;
+    if (client_sockets_.size() >= static_cast<std::size_t>(config_.max_clients)) {
+      ::close(client);
+      refused_.fetch_add(1, std::memory_order_relaxed);
+      return;
+    }
+    const int yes = 1;
+    ::setsockopt(client, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+    // A client that does not read its replies must not block the server: a reply that cannot
+    // leave within the client timeout closes the connection.
+    const std::uint64_t us = config_.client_timeout.count() / 1000u;
+    timeval send_timeout{static_cast<time_t>(us / 1000000u), static_cast<suseconds_t>(us % 1000000u)};
+    ::setsockopt(client, SOL_SOCKET, SO_SNDTIMEO, &send_timeout, sizeof send_timeout);
+    client_sockets_.push_back(client);
+    connections_.fetch_add(1, std::memory_order_relaxed);
+    clients_.store(static_cast<std::uint32_t>(client_sockets_.size()), std::memory_order_relaxed);
+  }
+
+  void drop_client(int client) noexcept {
+    ::close(client);
+    client_sockets_.erase(std::find(client_sockets_.begin(), client_sockets_.end(), client));
+    clients_.store(static_cast<std::uint32_t>(client_sockets_.size()), std::memory_order_relaxed);
+  }
+
+  void serve_client(int client) {
+    std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH> query{};
+    modbus_set_socket(context_.get(), client);
+    const int received = modbus_receive(context_.get(), query.data());
+    if (received == 0) return;  // not for this server (libmodbus ignores it)
+    if (received < 0) {
+      // The peer closed (ECONNRESET), or the request was malformed or incomplete in time.
+      if (errno != ECONNRESET) bad_requests_.fetch_add(1, std::memory_order_relaxed);
+      drop_client(client);
+      return;
+    }
+    const int header = modbus_get_header_length(context_.get());
+    if (!known(query[static_cast<std::size_t>(header)]) &&
+        !skip_rest_of_frame(client, query.data(), received, header)) {
+      bad_requests_.fetch_add(1, std::memory_order_relaxed);
+      drop_client(client);
+      return;
+    }
+    if (known(query[static_cast<std::size_t>(header)]) && !well_framed(query.data(), received, header)) {
+      // libmodbus reads a request by its function code; a frame whose MBAP header says
+      // otherwise (another protocol, another length) leaves the stream out of step: closed.
+      bad_requests_.fetch_add(1, std::memory_order_relaxed);
+      drop_client(client);
+      return;
+    }
+    if (to_clients_.refresh()) load_outputs(to_clients_.read_slot());
+    const std::uint8_t function = query[static_cast<std::size_t>(header)];
+    const int sent = modbus_reply(context_.get(), query.data(), received, mapping_.get());
+    requests_.fetch_add(1, std::memory_order_relaxed);
+    if (sent < 0) {  // the reply could not leave (the client does not read, or is gone)
+      bad_requests_.fetch_add(1, std::memory_order_relaxed);
+      drop_client(client);
+      return;
+    }
+    // An exception response is the header, the function code | 0x80 and the exception code;
+    // every other response to a request libmodbus serves is longer.
+    if (sent == header + 2) {
+      exceptions_.fetch_add(1, std::memory_order_relaxed);
+      return;
+    }
+    last_valid_ = clock::now();
+    const bool was_zeroed = zeroed_;  // the watchdog's zeros end with a valid request
+    zeroed_ = false;
+    if (writes(function)) sync_after_write(function);
+    if (writes(function) || was_zeroed) publish_inputs();
+  }
+
+  // The MBAP header: protocol identifier 0, and a length that counts the unit identifier and
+  // the PDU as received.
+  static bool well_framed(const std::uint8_t* query, int received, int header) noexcept {
+    if (header != 7 || received < 8) return true;  // (not TCP's MBAP)
+    const unsigned protocol = (static_cast<unsigned>(query[2]) << 8) | query[3];
+    const unsigned length = (static_cast<unsigned>(query[4]) << 8) | query[5];
+    return protocol == 0 && length == static_cast<unsigned>(received - 6);
+  }
+
+  // The functions libmodbus serves (and reads by their own length).
+  static constexpr bool known(std::uint8_t function) noexcept {
+    return (function >= 0x01 && function <= 0x06) || function == 0x0F || function == 0x10 || function == 0x11 ||
+           function == 0x16 || function == 0x17;
+  }
+
+  // A function libmodbus does not know: it read the function code only. The rest of the PDU,
+  // as the MBAP header counts it, is read and dropped (the reply is exception 1, illegal
+  // function); FALSE if the header is no Modbus header or the rest does not come in time.
+  bool skip_rest_of_frame(int client, const std::uint8_t* query, int received, int header) noexcept {
+    if (header != 7) return true;
+    const unsigned protocol = (static_cast<unsigned>(query[2]) << 8) | query[3];
+    const unsigned length = (static_cast<unsigned>(query[4]) << 8) | query[5];
+    const auto have = static_cast<unsigned>(received - 6);
+    if (protocol != 0 || length < have || length > MODBUS_MAX_PDU_LENGTH + 1u) return false;
+    std::array<std::uint8_t, MODBUS_MAX_PDU_LENGTH> rest{};
+    std::size_t missing = length - have;
+    const int timeout_ms = static_cast<int>(config_.client_timeout.count() / 1000000u);
+    while (missing > 0) {
+      pollfd p{client, POLLIN, 0};
+      if (::poll(&p, 1, timeout_ms) <= 0) return false;
+      const ssize_t n = ::recv(client, rest.data(), missing, 0);
+      if (n <= 0) return false;
+      missing -= static_cast<std::size_t>(n);
+    }
+    return true;
+  }
+
+  static constexpr bool writes(std::uint8_t function) noexcept {
+    return function == 0x05 || function == 0x06 || function == 0x0F || function == 0x10 || function == 0x16 ||
+           function == 0x17;
+  }
+  static constexpr bool writes_bits(std::uint8_t function) noexcept { return function == 0x05 || function == 0x0F; }
+
+  // Coils that address the holding registers' bits: the other view follows the one written.
+  void sync_after_write(std::uint8_t function) noexcept {
+    if (!shared_bits()) return;
+    modbus_mapping_t& m = *mapping_;
+    for (int r = 0; r < m.nb_registers; ++r) {
+      std::uint8_t* const bits = m.tab_bits + static_cast<std::ptrdiff_t>(r) * 16;
+      if (writes_bits(function)) {
+        unsigned value = 0;
+        for (unsigned b = 0; b < 16; ++b) value |= (bits[b] != 0 ? 1U : 0U) << b;
+        m.tab_registers[r] = static_cast<std::uint16_t>(value);
+      } else {
+        for (unsigned b = 0; b < 16; ++b) bits[b] = static_cast<std::uint8_t>((m.tab_registers[r] >> b) & 1U);
+      }
+    }
+  }
+
+  // What the program reads: the holding registers and coils as the data model holds them
+  // (or 0, while the watchdog has expired).
+  void publish_inputs() noexcept {
+    input_area& slot = from_clients_.write_slot();
+    const modbus_mapping_t& m = *mapping_;
+    for (std::uint32_t r = 0; r < holding_window_.registers(); ++r) {
+      store_register(slot, holding_window_, r, zeroed_ ? std::uint16_t{0} : m.tab_registers[r]);
+    }
+    for (std::uint32_t b = 0; b < coil_window_.bits; ++b) {
+      store_bit(slot, coil_window_, b, !zeroed_ && m.tab_bits[b] != 0);
+    }
+    from_clients_.publish();
+  }
+
+  // What the clients read: the input registers and discrete inputs from the published outputs.
+  void load_outputs(const output_area& outputs) noexcept {
+    modbus_mapping_t& m = *mapping_;
+    for (std::uint32_t r = 0; r < input_window_.registers(); ++r) {
+      m.tab_input_registers[r] = load_register(outputs, input_window_, r);
+      if (shared_discretes()) {
+        for (unsigned b = 0; b < 16; ++b) {
+          m.tab_input_bits[r * 16 + b] = static_cast<std::uint8_t>((m.tab_input_registers[r] >> b) & 1U);
+        }
+      }
+    }
+    for (std::uint32_t b = 0; b < discrete_window_.bits; ++b) {
+      m.tab_input_bits[b] = load_bit(outputs, discrete_window_, b) ? 1 : 0;
+    }
+  }
+
+  void check_watchdog() noexcept {
+    if (config_.watchdog.count() == 0 || zeroed_) return;
+    if (clock::now() - last_valid_ < std::chrono::nanoseconds(config_.watchdog.count())) return;
+    zeroed_ = true;
+    watchdog_expiries_.fetch_add(1, std::memory_order_relaxed);
+    publish_inputs();
+  }
+
+  modbus_server_config config_;
+  image_window holding_window_{}, input_window_{}, coil_window_{}, discrete_window_{};
+  triple_buffer<input_area> from_clients_{};  // server thread -> cycle start
+  triple_buffer<output_area> to_clients_{};   // cycle end -> server thread
+
+  // The server thread's.
+  detail::modbus_context context_;
+  detail::modbus_mapping mapping_;
+  int listen_socket_ = -1;
+  int wake_[2] = {-1, -1};
+  std::vector<int> client_sockets_;
+  clock::time_point last_valid_{};
+  bool zeroed_ = false;
+  std::uint16_t port_ = 0;
+  char error_text_[160] = {};
+
+  std::thread thread_;
+  std::atomic<bool> stop_requested_{false};
+  std::atomic<std::uint64_t> requests_{0}, exceptions_{0}, bad_requests_{0}, connections_{0}, refused_{0},
+      watchdog_expiries_{0};
+  std::atomic<std::uint32_t> clients_{0};
+};
+
+}  // namespace iecoop
+
+#include <iecoop/detail/pop_macros.hpp>
