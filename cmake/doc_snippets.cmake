@@ -621,6 +621,11 @@ function(iecoop_doc_snippets name)
       if(TARGET fmt::fmt)
         target_link_libraries(${target} PRIVATE fmt::fmt)  # for a snippet that includes <iecoop/fmt.hpp>
       endif()
+      foreach(exchange IN ITEMS iecoop::modbus iecoop::mqtt)  # a snippet of the data exchange (docs/exchange.md)
+        if(TARGET ${exchange})
+          target_link_libraries(${target} PRIVATE ${exchange})
+        endif()
+      endforeach()
       # Each snippet is its own translation unit; the prelude's headers are parsed once (a
       # precompiled header: about four times faster; CMAKE_DISABLE_PRECOMPILE_HEADERS=ON turns it off).
       target_precompile_headers(${target} PRIVATE <iecoop/iecoop.hpp> <iecoop/ostream.hpp>)
