@@ -6,12 +6,27 @@
 // behind an INTERFACE (conveyor.hpp says more). Its tasks run in simulated time (the default:
 // 21 s of machine time in a fraction of a second, the same every run) or, with --realtime,
 // against the wall clock on iecoop's real-time runner. `iecoop_demo --help` lists the options.
+// With --modbus and --mqtt (where the demo was built with libmodbus and libmosquitto) any Modbus
+// or MQTT tool can watch the conveyor run (docs/exchange.md).
 #include "conveyor.hpp"
 
 #include <iecoop/fmt.hpp>
 #include <iecoop/iecoop.hpp>
 #include <iecoop/runtime/realtime.hpp>
 #include <iecoop/trace/watch.hpp>
+// Set by examples/CMakeLists.txt where the libraries are found.
+#ifndef IECOOP_DEMO_MODBUS
+#define IECOOP_DEMO_MODBUS 0
+#endif
+#ifndef IECOOP_DEMO_MQTT
+#define IECOOP_DEMO_MQTT 0
+#endif
+#if IECOOP_DEMO_MODBUS
+#include <iecoop/exchange/modbus_server.hpp>
+#endif
+#if IECOOP_DEMO_MQTT
+#include <iecoop/exchange/mqtt.hpp>
+#endif
 
 #include <fmt/core.h>
 
@@ -138,6 +153,9 @@ struct options {
   const char* vcd_file = nullptr;
   const char* csv_file = nullptr;
   const char* svg_file = nullptr;
+  int modbus_port = -1;             // --modbus PORT
+  std::string mqtt_host;            // --mqtt HOST[:PORT]
+  std::uint16_t mqtt_port = 1883;
   bool help = false;
 };
 
@@ -145,6 +163,7 @@ void usage(std::FILE* to) {
   fmt::print(to,
              "usage: iecoop_demo [--motor dol|vfd] [--realtime [SECONDS]] [--fifo] [--retain FILE]\n"
              "                   [--watch] [--vcd FILE] [--csv FILE] [--svg FILE]\n"
+             "                   [--modbus PORT] [--mqtt HOST[:PORT]]\n"
              "\n"
              "A conveyor controlled by a PLC program written with iecoop, run against a simulated\n"
              "belt and operator; prints a trace of the key signals and the tasks' statistics.\n"
@@ -165,8 +184,17 @@ void usage(std::FILE* to) {
              "                       as a VCD file for GTKWave\n"
              "  --csv FILE           ... as CSV (iecoop-replay's format)\n"
              "  --svg FILE           ... as an SVG timing chart a browser shows\n"
+             "  --modbus PORT        with --realtime: a Modbus TCP server on PORT (0: a free one): input\n"
+             "                       registers 0..3 are %QW0..%QW3 (register 0: bit 0 motor, bit 1 jam\n"
+             "                       lamp; register 1: the speed reference), discrete inputs their bits,\n"
+             "                       holding registers 0..7 are %IW8..%IW15 (read by nothing here){}\n"
+             "  --mqtt HOST[:PORT]   with --realtime: publish the trace's values to the MQTT broker at\n"
+             "                       HOST (port 1883) under iecoop/demo/..., on change, retained, with\n"
+             "                       iecoop/demo/status online/offline; the batch size is a command:\n"
+             "                       iecoop/demo/GVL_Config/wBatchSize/set (1..100){}\n"
              "  --help               this text\n",
-             seconds(LTIME(sim::scenario_length)));
+             seconds(LTIME(sim::scenario_length)), IECOOP_DEMO_MODBUS ? "" : " (not built: libmodbus)",
+             IECOOP_DEMO_MQTT ? "" : " (not built: libmosquitto)");
 }
 
 std::optional<options> parse(int argc, char** argv) {
@@ -203,11 +231,37 @@ std::optional<options> parse(int argc, char** argv) {
     } else if (arg == "--svg" && value != nullptr) {
       o.svg_file = value;
       ++i;
+    } else if (arg == "--modbus" && value != nullptr) {
+      char* end = nullptr;
+      const long port = std::strtol(value, &end, 10);
+      if (end == value || *end != '\0' || port < 0 || port > 65535) return std::nullopt;
+      o.modbus_port = static_cast<int>(port);
+      ++i;
+    } else if (arg == "--mqtt" && value != nullptr) {
+      const std::string_view text = value;
+      const std::size_t colon = text.rfind(':');
+      o.mqtt_host = std::string(text.substr(0, colon));
+      if (colon != std::string_view::npos) {
+        char* end = nullptr;
+        const long port = std::strtol(value + colon + 1, &end, 10);
+        if (end == value + colon + 1 || *end != '\0' || port < 1 || port > 65535) return std::nullopt;
+        o.mqtt_port = static_cast<std::uint16_t>(port);
+      }
+      if (o.mqtt_host.empty()) return std::nullopt;
+      ++i;
     } else {
       return std::nullopt;
     }
   }
   if (o.watch && !o.realtime) return std::nullopt;  // a watch list watches a running controller
+  // The network watches a running controller too (the simulated shift is over in a blink).
+  if ((o.modbus_port >= 0 || !o.mqtt_host.empty()) && !o.realtime) return std::nullopt;
+  if ((o.modbus_port >= 0 && !IECOOP_DEMO_MODBUS) || (!o.mqtt_host.empty() && !IECOOP_DEMO_MQTT)) {
+    std::fprintf(stderr, "iecoop_demo: built without %s: install %s and build again\n",
+                 o.modbus_port >= 0 && !IECOOP_DEMO_MODBUS ? "libmodbus" : "libmosquitto",
+                 o.modbus_port >= 0 && !IECOOP_DEMO_MODBUS ? "libmodbus-dev" : "libmosquitto-dev");
+    return std::nullopt;
+  }
   return o;
 }
 
@@ -242,8 +296,53 @@ int run(const options& opt) {
     const SUPERVISION_PRG& s = plc.get<SUPERVISION_PRG>();
     fmt::print("  retain   {}: parts {}, jams {} from the runs before\n", opt.retain_file, s.udiParts, s.uiJams);
   }
+#if IECOOP_DEMO_MODBUS
+  // --modbus: the conveyor's outputs served to any Modbus client, beside the simulated field
+  // (CODESYS: a Modbus TCP Slave Device with 8 holding and 4 input registers).
+  std::optional<modbus_server<>> hmi;
+  std::optional<io_chain<simulated_io<>, modbus_server<>>> io;
+  if (opt.modbus_port >= 0) {
+    modbus_server_config served;
+    served.port = static_cast<std::uint16_t>(opt.modbus_port);
+    served.holding_registers = 8;
+    served.holding_image = "%IW8";
+    served.input_registers = 4;
+    served.input_image = "%QW0";
+    hmi.emplace(served);
+    if (const char* error = hmi->start()) {
+      fmt::print(stderr, "{}\n", error);
+      return 1;
+    }
+    io.emplace(sim::field, *hmi);
+    plc.connect(*io);
+    fmt::print("  modbus   serving on port {}: input registers 0..3 = %QW0..%QW3, holding registers 0..7 = %IW8..%IW15\n",
+               hmi->port());
+  }
+#endif
+#if IECOOP_DEMO_MQTT
+  // --mqtt: the trace's values published on change; the batch size as a command.
+  std::optional<mqtt_bridge<32, 8>> mqtt;
+  if (!opt.mqtt_host.empty()) {
+    mqtt_bridge_config broker;
+    broker.host = opt.mqtt_host;
+    broker.port = opt.mqtt_port;
+    broker.client_id = "iecoop-demo";
+    broker.topic_prefix = "iecoop/demo";
+    mqtt.emplace(broker);
+    add_shift_channels(*mqtt, plc);
+    mqtt->command("GVL_Config.wBatchSize", config.wBatchSize, WORD(1), WORD(100));
+    mqtt->attach(plc.task("Fast"));
+    if (const char* error = mqtt->start()) {
+      fmt::print(stderr, "{}\n", error);
+      return 1;
+    }
+    fmt::print("  mqtt     {}:{}: iecoop/demo/<name>, iecoop/demo/status; command iecoop/demo/GVL_Config/wBatchSize/set\n",
+               opt.mqtt_host, opt.mqtt_port);
+  }
+#endif
   fmt::print("\n");
   print_trace_header();
+  std::fflush(stdout);  // the banner now, also into a pipe or a file (a tool waits for the port's line)
 
   static shift_trace recorder;  // static: 1 MiB is no stack variable
   const bool tracing = opt.vcd_file != nullptr || opt.csv_file != nullptr || opt.svg_file != nullptr;
@@ -350,6 +449,23 @@ int run(const options& opt) {
                            write_svg(v, put, chart);
                          }));
   }
+#if IECOOP_DEMO_MODBUS
+  if (hmi) {
+    const modbus_server_statistics served = hmi->statistics();
+    fmt::print("modbus:  {} requests served ({} answered with an exception), {} connections\n", served.requests,
+               served.exceptions, served.connections);
+    hmi->stop();
+    plc.connect(sim::field);
+  }
+#endif
+#if IECOOP_DEMO_MQTT
+  if (mqtt) {
+    mqtt->stop();  // "offline", then disconnect
+    const mqtt_bridge_statistics sent = mqtt->statistics();
+    fmt::print("mqtt:    {} messages published, {} commands applied ({} rejected), {} connections\n", sent.published,
+               sent.commands_applied, sent.commands_rejected, sent.connects);
+  }
+#endif
   plc.stop();  // FB_Exit of every instance; RETAIN and PERSISTENT values saved (to FILE with --retain)
   if (opt.retain_file != nullptr) fmt::print("retain:  saved to {}\n", opt.retain_file);
   return faults == 0 ? 0 : 1;

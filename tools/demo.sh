@@ -5,6 +5,8 @@ set -eu
 cd "$(dirname "$0")/.."
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ libfmt-dev
+# pkg-config, libmodbus and libmosquitto: the demo's --modbus PORT and --mqtt HOST (docs/exchange.md).
+iecoop_require_packages pkg-config libmodbus-dev libmosquitto-dev
 
 cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DIECOOP_BUILD_EXAMPLES=ON -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_BENCH=OFF >/dev/null
 cmake --build build/demo --target iecoop_demo -j "$(nproc 2>/dev/null || echo 2)" >/dev/null

@@ -33,7 +33,12 @@ iecoop_require_packages gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-
 # The trace writers' real readers (docs/trace.md): GTKWave's vcd2fst and fst2vcd read every VCD,
 # rsvg-convert renders every SVG and xmllint parses it.
 iecoop_require_packages gtkwave librsvg2-bin libxml2-utils
-for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm vcd2fst fst2vcd rsvg-convert xmllint; do
+# The data exchange (docs/exchange.md): libmodbus and libmosquitto, and the real peers its tests
+# start on localhost: mbpoll, pymodbus (with python3-serial-asyncio, which pymodbus's server needs
+# and only recommends), the mosquitto broker and its clients.
+iecoop_require_packages pkg-config libmodbus-dev libmosquitto-dev mosquitto mosquitto-clients mbpoll python3-pymodbus \
+  python3-serial-asyncio
+for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm vcd2fst fst2vcd rsvg-convert xmllint mbpoll mosquitto_sub; do
   command -v "$tool" >/dev/null 2>&1 || { echo "iecoop: $tool is missing: the tests that need it cannot run" >&2; exit 1; }
 done
 
@@ -90,12 +95,16 @@ firmware() {
 # Each compile-fail check runs with both compilers (both must reject the misuse, with the
 # message); its compiling twin runs in the clang build only (Clang checks it in two thirds of
 # GCC's time, and the same correct code compiles with g++ throughout the tests and examples).
+# The data exchange's tests against real peers (label exchange) run in the clang build only: they
+# test threads and sockets, which the sanitizers watch; the g++ build compiles the exchange's
+# headers in its header checks and its benchmark (bench/exchange_bench.cpp).
 # The clang build runs the unit tests in 6 slices, each one process (IECOOP_UNIT_TEST_SHARDS):
 # a sanitized process start costs more than most test cases; the g++ build runs each case alone.
 run clang-sanitize clang++ "-LE ^check$" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1 -DNDEBUG" \
   "-DIECOOP_SANITIZE=address;undefined" -DIECOOP_CHECK_EXAMPLES=OFF -DIECOOP_BUILD_FUZZ=ON -DIECOOP_FUZZ_SECONDS=5 \
-  -DIECOOP_BUILD_BENCH=OFF -DIECOOP_HEADER_CHECKS=OFF -DIECOOP_CONSUMER_TESTS=OFF -DIECOOP_UNIT_TEST_SHARDS=6
-run gcc-release g++ "-E ^compile_fail\\..*\\.twin$" -DCMAKE_BUILD_TYPE=Release
+  -DIECOOP_BUILD_BENCH=OFF -DIECOOP_HEADER_CHECKS=OFF -DIECOOP_CONSUMER_TESTS=OFF -DIECOOP_UNIT_TEST_SHARDS=6 \
+  -DIECOOP_EXCHANGE_TESTS=ON
+run gcc-release g++ "-E ^compile_fail\\..*\\.twin$" -DCMAKE_BUILD_TYPE=Release -DIECOOP_EXCHANGE_TESTS=OFF
 firmware cortex-m3
 firmware cortex-m4f
 echo "== iecoop: all tests passed"

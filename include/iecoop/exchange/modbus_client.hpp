@@ -169,7 +169,7 @@ class modbus_client {
   /// Device `index`'s diagnostics as the current cycle latched them (read them in the task's
   /// programs, or between cycles).
   [[nodiscard]] const modbus_device_status& status(std::size_t index) const noexcept {
-    return devices_[index]->latched.status;
+    return devices_[index]->latched;
   }
 
   /// IoDriver: each device's newest inputs (and status) into the image.
@@ -210,7 +210,7 @@ class modbus_client {
     std::vector<channel_window> writes;
     triple_buffer<input_snapshot> to_cycles{};
     triple_buffer<output_snapshot> from_cycles{};
-    input_snapshot latched{};  // the cycles'
+    modbus_device_status latched{};  // the cycles'
 
     // The poller's.
     std::thread thread;
@@ -306,8 +306,9 @@ class modbus_client {
     // The cycle's start: this device's newest poll, its read windows into the image.
     void latch(std::span<std::byte> inputs) noexcept {
       to_cycles.refresh();
-      latched = to_cycles.read_slot();
-      for (const channel_window& r : reads) copy_window(inputs, latched.data, r.window);
+      const input_snapshot& newest = to_cycles.read_slot();  // the cycles' until their next refresh()
+      latched = newest.status;
+      for (const channel_window& r : reads) copy_window(inputs, newest.data, r.window);
     }
 
     // The cycle's end: the write windows, for the next poll.
