@@ -7,7 +7,8 @@
 # A Release build (default g++) in build/exchange-<compiler>; then iecoop_bench_exchange with 5
 # repetitions (the medians, as a Markdown table) and iecoop_exchange_jitter with PHASES quiet and
 # PHASES traffic phases of SECONDS each (default 3 x 2 s) and CLIENTS clients (default 2).
-# Installs what it needs (cmake, the compiler, Google Benchmark, pkg-config, libmodbus) first.
+# Installs what it needs (cmake, the compiler, Google Benchmark, pkg-config, libmodbus, libmosquitto)
+# first.
 set -eu
 cd "$(dirname "$0")/.."
 . tools/require_packages.sh
@@ -25,7 +26,7 @@ while getopts c:p:s:k: option; do
     *) echo "usage: sh bench/exchange.sh [-c COMPILER] [-p PHASES] [-s SECONDS] [-k CLIENTS]" >&2; exit 2 ;;
   esac
 done
-iecoop_require_packages cmake make g++ libbenchmark-dev pkg-config libmodbus-dev
+iecoop_require_packages cmake make g++ libbenchmark-dev pkg-config libmodbus-dev libmosquitto-dev
 
 dir=build/exchange-$compiler
 echo "== exchange: building with $compiler in $dir" >&2
@@ -35,7 +36,7 @@ cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$dir" -j "$(nproc 2>/dev/null || echo 2)" --target iecoop_bench_exchange iecoop_exchange_jitter >/dev/null
 
 echo "== exchange: the cycle's cost (5 repetitions, medians)" >&2
-echo "| Benchmark | Words mapped each way | ns per cycle | ns per word |"
+echo "| Benchmark | Words each way (MQTT: channels) | ns per cycle | ns per word (channel) |"
 echo "|---|---:|---:|---:|"
 "$dir/bench/iecoop_bench_exchange" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
   --benchmark_format=csv 2>/dev/null |

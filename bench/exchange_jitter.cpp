@@ -142,9 +142,10 @@ int main(int argc, char** argv) {
     current_log = &log;
     runner.run(never, LTIME::from_ticks(static_cast<std::uint64_t>(seconds * 1e9)));
     current_log = nullptr;
-    const std::uint64_t requests = server.statistics().requests - requests_before;
     done.store(true);
     for (std::thread& t : load) t.join();
+    if (traffic) std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the last replies are counted
+    const std::uint64_t requests = server.statistics().requests - requests_before;
     results.push_back(summarise(traffic ? "traffic" : "quiet", log, requests));
   }
 
