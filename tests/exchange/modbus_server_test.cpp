@@ -6,6 +6,7 @@
 
 #include <array>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <regex>
 #include <string>
@@ -76,7 +77,7 @@ struct SERVER_PRG : program<SERVER_PRG> {
 using server_app = application<task<SERVER_PRG>, use_image<server_image>>;
 
 server_app make_app() {
-  return server_app{iecoop::task<SERVER_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0, watchdog{"T#50ms"_iec, 1}},
+  return server_app{iecoop::task<SERVER_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0, watchdog{"T#90ms"_iec, 1}},
                     use_image<server_image>{}};
 }
 
@@ -89,7 +90,9 @@ std::vector<std::string> mbpoll(std::uint16_t port, std::vector<std::string> opt
 // The values mbpoll printed, by reference ("[3]: \t-17").
 std::vector<std::pair<int, long long>> mbpoll_values(const std::string& output) {
   std::vector<std::pair<int, long long>> values;
-  static const std::regex line(R"(\[(\d+)\]:\s+(-?\d+))");
+  // A line counts once it is complete: a value cut off at the end of the output is no value.
+  // ("[2]: \t65531 (-5)": mbpoll adds the signed reading of a register in brackets.)
+  static const std::regex line(R"(\[(\d+)\]:[ \t]+(-?\d+)[^\n]*\n)");
   for (auto it = std::sregex_iterator(output.begin(), output.end(), line); it != std::sregex_iterator(); ++it) {
     values.emplace_back(std::stoi((*it)[1].str()), std::stoll((*it)[2].str()));
   }
@@ -257,7 +260,7 @@ TEST_CASE(
   // The client reads the counter and its complement (input registers 2..5) every 10 ms.
   peer reader(mbpoll(server.port(), {"-t", "3:int", "-r", "3", "-c", "2", "-l", "10", "127.0.0.1"}));
   REQUIRE(eventually([&] { return mbpoll_values(reader.output()).size() >= 200; }, 20s));
-  reader.kill();
+  reader.kill(SIGINT);  // mbpoll flushes its output on SIGINT
   cycles.stop();
 
   const SERVER_PRG& prg = plc.get<SERVER_PRG>();
@@ -390,6 +393,24 @@ TEST_CASE(
     ::close(s);
     CHECK(eventually([&] { return server.statistics().bad_requests == 1; }, 3s));
   }
+  SUBCASE("a request dribbled a byte at a time: closed at the client timeout from its first byte") {
+    const int s = connect_to(server.port());
+    REQUIRE(s >= 0);
+    const auto started = std::chrono::steady_clock::now();
+    bool closed = false;
+    for (const std::uint8_t byte : frame({0x03, 0, 0, 0, 1})) {  // 12 bytes, one every 100 ms: 1.2 s
+      if (!send_all(s, {byte}) || closed_by_server(s, 100ms)) {
+        closed = true;
+        break;
+      }
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    CHECK(closed);
+    CHECK(seconds < 1.0);  // the default client_timeout is 500 ms: not 12 gaps of 100 ms
+    ::close(s);
+    CHECK(eventually([&] { return server.statistics().bad_requests == 1; }, 3s));
+    CHECK(server.statistics().requests == 0);
+  }
   SUBCASE("half a request, then silence: closed after the client timeout, the cycles never wait") {
     const int s = connect_to(server.port());
     REQUIRE(s >= 0);
@@ -451,25 +472,31 @@ TEST_CASE("modbus_server: a client killed mid-run leaves no trace, too many clie
 TEST_CASE("modbus_server: the watchdog sets the holding registers to 0 when no client has written for its time") {
   server_app plc = make_app();
   modbus_server_config config = config_on_free_port();
-  config.watchdog = "LTIME#300ms"_iec;
+  config.watchdog = "LTIME#500ms"_iec;
   modbus_server<server_image> server{config};
   REQUIRE(server.start() == nullptr);
   plc.connect(server);
   REQUIRE(plc.start());
   const run_result write = run_while(plc, mbpoll(server.port(), {"-1", "-r", "1", "127.0.0.1", "4321"}));
   REQUIRE_MESSAGE(write.exit_code == 0, write.output);
+  const std::uint64_t expired = server.statistics().watchdog_expiries;  // (0, unless the start was slow)
   plc.run_for("T#2ms"_iec);
   CHECK(plc.get<SERVER_PRG>().iSet1 == 4321);
-  CHECK(server.statistics().watchdog_expiries == 0);
-  REQUIRE(eventually([&] { return server.statistics().watchdog_expiries == 1; }, 3s));
+  REQUIRE(eventually([&] { return server.statistics().watchdog_expiries == expired + 1; }, 3s));
   plc.run_for("T#2ms"_iec);
   CHECK(plc.get<SERVER_PRG>().iSet1 == 0);
-  // A request answered without exception ends it: the registers are back (a read, too).
+  // The data model's registers are 0 too: a client that only reads brings nothing back.
   const run_result read = run_while(plc, mbpoll(server.port(), {"-1", "-t", "4", "-r", "1", "127.0.0.1"}));
   REQUIRE_MESSAGE(read.exit_code == 0, read.output);
-  CHECK(value_at(read.output, 1) == 4321);
+  CHECK(value_at(read.output, 1) == 0);
   plc.run_for("T#2ms"_iec);
-  CHECK(plc.get<SERVER_PRG>().iSet1 == 4321);
+  CHECK(plc.get<SERVER_PRG>().iSet1 == 0);
+  // A write does, and the watchdog watches again.
+  const run_result again = run_while(plc, mbpoll(server.port(), {"-1", "-r", "1", "127.0.0.1", "77"}));
+  REQUIRE_MESSAGE(again.exit_code == 0, again.output);
+  plc.run_for("T#2ms"_iec);
+  CHECK(plc.get<SERVER_PRG>().iSet1 == 77);
+  REQUIRE(eventually([&] { return server.statistics().watchdog_expiries == expired + 2; }, 3s));
 }
 
 TEST_CASE("modbus_server: a configuration that does not fit the image is refused by start(), with the rule") {
@@ -500,6 +527,8 @@ TEST_CASE("modbus_server: a configuration that does not fit the image is refused
           c.discrete_inputs = 4;
           c.discrete_image = "%QX20.0";
         }).empty());
+  CHECK(start_with([](modbus_server_config& c) { c.client_timeout = LTIME{}; }).find("client_timeout") !=
+        std::string::npos);
   CHECK(start_with([](modbus_server_config& c) { c.bind_address = "no address"; }).find("iecoop:") !=
         std::string::npos);
   // A port in use.

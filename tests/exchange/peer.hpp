@@ -33,11 +33,15 @@ class peer {
   explicit peer(std::vector<std::string> argv) : argv_(std::move(argv)) { start(); }
   peer(const peer&) = delete;
   peer& operator=(const peer&) = delete;
-  ~peer() { kill(SIGKILL); }
+  ~peer() {
+    kill(SIGKILL);
+    if (!log_path_.empty()) ::unlink(log_path_.c_str());
+  }
 
   /// Starts it (again, after it was killed): the same command line, a fresh log.
   void start() {
     kill(SIGKILL);
+    if (!log_path_.empty()) ::unlink(log_path_.c_str());
     char path[] = "/tmp/iecoop-peer-XXXXXX";
     const int log = ::mkstemp(path);
     log_path_ = path;

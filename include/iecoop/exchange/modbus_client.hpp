@@ -85,7 +85,7 @@ struct modbus_device_config {
   std::string name = "Device";     ///< for messages
   std::string host = "127.0.0.1";  ///< an IPv4 address
   std::uint16_t port = 502;
-  int unit_id = 1;                           ///< the unit identifier of the requests (0..255)
+  int unit_id = 1;                           ///< the unit identifier of the requests (0..247, or 255)
   LTIME poll_interval{100'000'000};          ///< from the start of one poll to the next (100 ms)
   LTIME response_timeout{1'000'000'000};     ///< a request without response in this time failed (1 s)
   LTIME reconnect_delay{100'000'000};        ///< the first wait before connecting again; doubled each failure...
@@ -104,7 +104,7 @@ struct modbus_device_status {
   BOOL xError;          ///< the last poll failed in at least one channel (its inputs hold their error values)
   BYTE byModbusError;   ///< the last exception code the device answered (1 illegal function, 2 address, ...; 0: none)
   UDINT udiPolls;       ///< polls made (each read and write of every channel)
-  UDINT udiErrors;      ///< polls that failed in a channel
+  UDINT udiErrors;      ///< polls that failed in a channel, and connection attempts that failed
   UDINT udiTimeouts;    ///< requests the device did not answer in time
   UDINT udiExceptions;  ///< exception responses
   UDINT udiConnects;    ///< connections made: the first, and each one again after a loss
@@ -132,12 +132,13 @@ class modbus_client {
   modbus_client& operator=(const modbus_client&) = delete;
   ~modbus_client() { stop(); }
 
-  /// Checks every device's channels against the image and starts polling. nullptr when it
-  /// polls; otherwise why not ("iecoop: ..."; the message names the device when it can).
+  /// Starts polling. nullptr when it polls; otherwise why not ("iecoop: ...", naming the device):
+  /// what the constructor found wrong in a device's configuration or channels (checked against
+  /// the image there, once), or two devices' read channels on the same input bits.
   [[nodiscard]] const char* start() {
     if (polling_) return "iecoop: the Modbus client is polling already; stop() it first";
     for (std::unique_ptr<device>& d : devices_) {
-      if (const char* error = d->prepare(error_text_, sizeof error_text_)) return error;
+      if (d->error != nullptr) return d->error;
     }
     for (std::size_t a = 0; a < devices_.size(); ++a) {
       for (std::size_t b = a; b < devices_.size(); ++b) {
@@ -155,10 +156,12 @@ class modbus_client {
     return nullptr;
   }
 
-  /// Stops polling (each device's thread ends within its response timeout). The inputs keep
-  /// what was latched last.
+  /// Stops polling: asks every device's thread to stop, then waits for them. A thread ends after
+  /// the request under way, or the connection attempt under way (each at most its device's
+  /// response_timeout). The inputs keep what was latched last.
   void stop() noexcept {
-    for (std::unique_ptr<device>& d : devices_) d->halt();
+    for (std::unique_ptr<device>& d : devices_) d->request_stop();
+    for (std::unique_ptr<device>& d : devices_) d->join();
     polling_ = false;
   }
 
@@ -203,10 +206,18 @@ class modbus_client {
   };
 
   struct device {
-    explicit device(modbus_device_config c) : config(std::move(c)) {}
+    explicit device(modbus_device_config c) : config(std::move(c)) {
+      error = check();
+      if (error != nullptr) {
+        reads.clear();
+        writes.clear();
+      }
+    }
 
     modbus_device_config config;
-    std::vector<channel_window> reads;
+    const char* error = nullptr;  // what check() found wrong in the configuration
+    char error_text[256] = {};
+    std::vector<channel_window> reads;  // made once, by the constructor: the cycles read them
     std::vector<channel_window> writes;
     triple_buffer<input_snapshot> to_cycles{};
     triple_buffer<output_snapshot> from_cycles{};
@@ -225,57 +236,49 @@ class modbus_client {
       return t == modbus_table::coils || t == modbus_table::discrete_inputs;
     }
 
-    const char* fail(char* text, std::size_t size, const char* what) const {
-      std::snprintf(text, size, "%s (device %s)", what, config.name.c_str());
-      return text;
+    const char* fail(const char* what) {
+      std::snprintf(error_text, sizeof error_text, "%s (device %s)", what, config.name.c_str());
+      return error_text;
     }
 
-    const char* prepare(char* text, std::size_t size) {
+    // The configuration, and the channels' windows in the image.
+    const char* check() {
       in_addr parsed{};
       if (::inet_pton(AF_INET, config.host.c_str(), &parsed) != 1) {
-        return fail(text, size, "iecoop: a Modbus device's host is an IPv4 address; give one such as 192.168.0.20");
+        return fail("iecoop: a Modbus device's host is an IPv4 address; give one such as 192.168.0.20");
       }
-      if (config.unit_id < 0 || config.unit_id > 255) {
-        return fail(text, size, "iecoop: a Modbus unit identifier is 0..255; give the device's");
+      // libmodbus sends unit identifiers 0..247 (the serial line's addresses) and 255.
+      if (config.unit_id < 0 || (config.unit_id > 247 && config.unit_id != 255)) {
+        return fail("iecoop: a Modbus unit identifier is 0..247 or 255; give the device's");
       }
-      if (config.poll_interval.count() == 0 || config.response_timeout.count() == 0) {
-        return fail(text, size, "iecoop: a Modbus device needs a poll interval and a response timeout above 0");
+      if (config.poll_interval.count() < 1'000'000 || config.response_timeout.count() < 1'000'000) {
+        return fail("iecoop: a Modbus device's poll interval and response timeout are at least 1 ms");
       }
-      reads.clear();
-      writes.clear();
       for (const modbus_channel& c : config.reads) {
         const bool bits = is_bits(c.table);
         if (c.count > (bits ? MODBUS_MAX_READ_BITS : MODBUS_MAX_READ_REGISTERS)) {
-          return fail(text, size,
-                      "iecoop: a read channel holds at most 125 registers or 2000 bits (one request); split it");
+          return fail("iecoop: a read channel holds at most 125 registers or 2000 bits (one request); split it");
         }
         const window_parse w = bits
                                    ? bit_window(c.image, c.count, io_area::input, Image::mode, Image::input_bytes)
                                    : register_window(c.image, c.count, io_area::input, Image::mode, Image::input_bytes);
-        if (!w) return fail(text, size, w.error);
+        if (!w) return fail(w.error);
         reads.push_back({&c, *w});
       }
       for (const modbus_channel& c : config.writes) {
         if (c.table == modbus_table::discrete_inputs || c.table == modbus_table::input_registers) {
-          return fail(text, size,
-                      "iecoop: discrete inputs and input registers are read only; write coils or holding registers");
+          return fail("iecoop: discrete inputs and input registers are read only; write coils or holding registers");
         }
         const bool bits = c.table == modbus_table::coils;
         if (c.count > (bits ? MODBUS_MAX_WRITE_BITS : MODBUS_MAX_WRITE_REGISTERS)) {
-          return fail(text, size,
-                      "iecoop: a write channel holds at most 123 registers or 1968 bits (one request); split it");
+          return fail("iecoop: a write channel holds at most 123 registers or 1968 bits (one request); split it");
         }
         const window_parse w =
             bits ? bit_window(c.image, c.count, io_area::output, Image::mode, Image::output_bytes)
                  : register_window(c.image, c.count, io_area::output, Image::mode, Image::output_bytes);
-        if (!w) return fail(text, size, w.error);
+        if (!w) return fail(w.error);
         writes.push_back({&c, *w});
       }
-      // Before the first poll the inputs show their error values (no data yet).
-      polled = input_snapshot{};
-      for (const channel_window& r : reads) apply_error_value(r);
-      to_cycles.write_slot() = polled;
-      to_cycles.publish();
       return nullptr;
     }
 
@@ -289,18 +292,24 @@ class modbus_client {
     }
 
     void launch() {
+      // Until the first poll the inputs show their error values (no data yet).
+      polled.status.xConnected = FALSE;
+      for (const channel_window& r : reads) apply_error_value(r);
+      hand_over();
       stop_requested = false;
       thread = std::thread([this] { poll_loop(); });
     }
 
-    void halt() noexcept {
-      if (!thread.joinable()) return;
+    void request_stop() noexcept {
       {
         const std::lock_guard<std::mutex> lock(mutex);
         stop_requested = true;
       }
       wake.notify_all();
-      thread.join();
+    }
+
+    void join() noexcept {
+      if (thread.joinable()) thread.join();
     }
 
     // The cycle's start: this device's newest poll, its read windows into the image.
@@ -346,7 +355,7 @@ class modbus_client {
     void poll_loop() {
       detail::modbus_context context(modbus_new_tcp(config.host.c_str(), config.port));
       if (!context) return;
-      modbus_set_slave(context.get(), config.unit_id);
+      if (modbus_set_slave(context.get(), config.unit_id) != 0) return;  // (check() allows only what it takes)
       detail::set_modbus_timeout(context.get(), &modbus_set_response_timeout, config.response_timeout);
       detail::set_modbus_timeout(context.get(), &modbus_set_byte_timeout, config.response_timeout);
       bool connected = false;
@@ -394,6 +403,7 @@ class modbus_client {
       bool failed = false;
       bool link_ok = true;
       for (const channel_window& r : reads) {
+        if (stopping()) return true;  // stop() need not wait for the rest of the poll
         if (!link_ok) {
           apply_error_value(r);
           continue;
@@ -428,7 +438,7 @@ class modbus_client {
       from_cycles.refresh();
       const output_snapshot& out = from_cycles.read_slot();
       for (const channel_window& w : writes) {
-        if (!link_ok || !out.written) break;
+        if (!link_ok || !out.written || stopping()) break;
         const modbus_channel& c = *w.channel;
         int put = -1;
         if (c.table == modbus_table::coils) {
@@ -448,14 +458,14 @@ class modbus_client {
     }
 
     // Counts a failed request by its errno; FALSE if the connection must be made again.
-    bool count_failure(int error) noexcept {
+    bool count_failure(int failure) noexcept {
       modbus_device_status& s = polled.status;
-      if (const std::uint8_t code = detail::modbus_exception_of(error); code != 0) {
+      if (const std::uint8_t code = detail::modbus_exception_of(failure); code != 0) {
         s.udiExceptions = s.udiExceptions + 1;
         s.byModbusError = BYTE(code);
         return true;  // the device answered: the connection is fine
       }
-      if (error == ETIMEDOUT) s.udiTimeouts = s.udiTimeouts + 1;
+      if (failure == ETIMEDOUT) s.udiTimeouts = s.udiTimeouts + 1;
       return false;
     }
 
@@ -467,7 +477,7 @@ class modbus_client {
 
   std::vector<std::unique_ptr<device>> devices_;
   bool polling_ = false;
-  char error_text_[256] = {};
+  char error_text_[256] = {};  // start()'s message about overlapping devices
 };
 
 }  // namespace iecoop

@@ -115,7 +115,9 @@ class modbus_server {
  public:
   using image_type = Image;
 
-  explicit modbus_server(modbus_server_config config = {}) : config_(std::move(config)) {}
+  /// The configuration is checked against the image here; start() reports what is wrong.
+  explicit modbus_server(modbus_server_config config = {})
+      : config_(std::move(config)), config_error_(make_windows()) {}
   modbus_server(const modbus_server&) = delete;
   modbus_server& operator=(const modbus_server&) = delete;
   ~modbus_server() { stop(); }
@@ -124,7 +126,7 @@ class modbus_server {
   /// why not ("iecoop: ..."), and it does not serve. Call it once (again after stop()).
   [[nodiscard]] const char* start() {
     if (thread_.joinable()) return "iecoop: the Modbus server is serving already; stop() it first";
-    if (const char* error = make_windows()) return error;
+    if (config_error_ != nullptr) return config_error_;
     if (const char* error = listen()) return error;
     stop_requested_.store(false);
     thread_ = std::thread([this] { serve(); });
@@ -132,7 +134,7 @@ class modbus_server {
   }
 
   /// Stops serving: closes every connection and the listening socket. What the program reads
-  /// keeps the clients' last values.
+  /// keeps the clients' last values, and so does the data model: start() serves them again.
   void stop() noexcept {
     if (thread_.joinable()) {
       stop_requested_.store(true);
@@ -190,6 +192,9 @@ class modbus_server {
 
   // The image windows, checked against the image.
   const char* make_windows() noexcept {
+    if (config_.client_timeout.count() < 1'000'000) {
+      return "iecoop: a Modbus server's client_timeout is at least 1 ms (0 would wait for a stalled client forever)";
+    }
     const window_parse holding = register_window(config_.holding_image, config_.holding_registers, io_area::input,
                                                  Image::mode, Image::input_bytes);
     if (!holding) return holding.error;
@@ -234,9 +239,11 @@ class modbus_server {
     if (!context_) return "iecoop: libmodbus could not make a TCP context; check bind_address (an IPv4 address)";
     const int bits = shared_bits() ? config_.holding_registers * 16 : config_.coils;
     const int input_bits = shared_discretes() ? config_.input_registers * 16 : config_.discrete_inputs;
-    mapping_.reset(modbus_mapping_new_start_address(
-        config_.coil_start, static_cast<unsigned>(bits), config_.discrete_start, static_cast<unsigned>(input_bits),
-        config_.holding_start, config_.holding_registers, config_.input_start, config_.input_registers));
+    if (!mapping_) {  // made once: a restart serves the values the clients wrote before
+      mapping_.reset(modbus_mapping_new_start_address(
+          config_.coil_start, static_cast<unsigned>(bits), config_.discrete_start, static_cast<unsigned>(input_bits),
+          config_.holding_start, config_.holding_registers, config_.input_start, config_.input_registers));
+    }
     if (!mapping_) return "iecoop: libmodbus could not allocate the server's data model";
     listen_socket_ = modbus_tcp_listen(context_.get(), config_.max_clients);
     if (listen_socket_ < 0) {
@@ -253,7 +260,6 @@ class modbus_server {
       close_all();
       return "iecoop: the Modbus server could not make its wake-up pipe";
     }
-    detail::set_modbus_timeout(context_.get(), &modbus_set_byte_timeout, config_.client_timeout);
     // What the clients read starts as the outputs published so far (all 0 before the first cycle).
     to_clients_.refresh();
     load_outputs(to_clients_.read_slot());
@@ -272,7 +278,6 @@ class modbus_server {
       if (end >= 0) ::close(end);
       end = -1;
     }
-    mapping_.reset();
     context_.reset();
   }
 
@@ -331,86 +336,91 @@ class modbus_server {
 
   void serve_client(int client) {
     std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH> query{};
-    modbus_set_socket(context_.get(), client);
-    const int received = modbus_receive(context_.get(), query.data());
-    if (received == 0) return;  // not for this server (libmodbus ignores it)
-    if (received < 0) {
-      // The peer closed (ECONNRESET), or the request was malformed or incomplete in time.
-      if (errno != ECONNRESET) bad_requests_.fetch_add(1, std::memory_order_relaxed);
+    std::size_t size = 0;
+    const frame_read read = read_frame(client, query, size);
+    if (read == frame_read::closed) {  // between two requests: the client is done
       drop_client(client);
       return;
     }
-    const int header = modbus_get_header_length(context_.get());
-    if (!known(query[static_cast<std::size_t>(header)]) &&
-        !skip_rest_of_frame(client, query.data(), received, header)) {
-      bad_requests_.fetch_add(1, std::memory_order_relaxed);
-      drop_client(client);
-      return;
-    }
-    if (known(query[static_cast<std::size_t>(header)]) && !well_framed(query.data(), received, header)) {
-      // libmodbus reads a request by its function code; a frame whose MBAP header says
-      // otherwise (another protocol, another length) leaves the stream out of step: closed.
+    if (read == frame_read::broken || !pdu_fits(query.data() + 7, size - 7)) {
+      // No Modbus/TCP frame, one whose length does not fit its function, or one that did not
+      // arrive in full within the client timeout: the stream is out of step, closed.
       bad_requests_.fetch_add(1, std::memory_order_relaxed);
       drop_client(client);
       return;
     }
     if (to_clients_.refresh()) load_outputs(to_clients_.read_slot());
-    const std::uint8_t function = query[static_cast<std::size_t>(header)];
-    const int sent = modbus_reply(context_.get(), query.data(), received, mapping_.get());
+    const std::uint8_t function = query[7];
+    modbus_set_socket(context_.get(), client);
+    const int sent = modbus_reply(context_.get(), query.data(), static_cast<int>(size), mapping_.get());
     requests_.fetch_add(1, std::memory_order_relaxed);
     if (sent < 0) {  // the reply could not leave (the client does not read, or is gone)
       bad_requests_.fetch_add(1, std::memory_order_relaxed);
       drop_client(client);
       return;
     }
-    // An exception response is the header, the function code | 0x80 and the exception code;
-    // every other response to a request libmodbus serves is longer.
-    if (sent == header + 2) {
+    // An exception response is the MBAP header, the function code | 0x80 and the exception
+    // code; every other response to a request libmodbus serves is longer.
+    if (sent == 9) {
       exceptions_.fetch_add(1, std::memory_order_relaxed);
       return;
     }
     last_valid_ = clock::now();
-    const bool was_zeroed = zeroed_;  // the watchdog's zeros end with a valid request
-    zeroed_ = false;
-    if (writes(function)) sync_after_write(function);
-    if (writes(function) || was_zeroed) publish_inputs();
-  }
-
-  // The MBAP header: protocol identifier 0, and a length that counts the unit identifier and
-  // the PDU as received.
-  static bool well_framed(const std::uint8_t* query, int received, int header) noexcept {
-    if (header != 7 || received < 8) return true;  // (not TCP's MBAP)
-    const unsigned protocol = (static_cast<unsigned>(query[2]) << 8) | query[3];
-    const unsigned length = (static_cast<unsigned>(query[4]) << 8) | query[5];
-    return protocol == 0 && length == static_cast<unsigned>(received - 6);
-  }
-
-  // The functions libmodbus serves (and reads by their own length).
-  static constexpr bool known(std::uint8_t function) noexcept {
-    return (function >= 0x01 && function <= 0x06) || function == 0x0F || function == 0x10 || function == 0x11 ||
-           function == 0x16 || function == 0x17;
-  }
-
-  // A function libmodbus does not know: it read the function code only. The rest of the PDU,
-  // as the MBAP header counts it, is read and dropped (the reply is exception 1, illegal
-  // function); FALSE if the header is no Modbus header or the rest does not come in time.
-  bool skip_rest_of_frame(int client, const std::uint8_t* query, int received, int header) noexcept {
-    if (header != 7) return true;
-    const unsigned protocol = (static_cast<unsigned>(query[2]) << 8) | query[3];
-    const unsigned length = (static_cast<unsigned>(query[4]) << 8) | query[5];
-    const auto have = static_cast<unsigned>(received - 6);
-    if (protocol != 0 || length < have || length > MODBUS_MAX_PDU_LENGTH + 1u) return false;
-    std::array<std::uint8_t, MODBUS_MAX_PDU_LENGTH> rest{};
-    std::size_t missing = length - have;
-    const int timeout_ms = static_cast<int>(config_.client_timeout.count() / 1000000u);
-    while (missing > 0) {
-      pollfd p{client, POLLIN, 0};
-      if (::poll(&p, 1, timeout_ms) <= 0) return false;
-      const ssize_t n = ::recv(client, rest.data(), missing, 0);
-      if (n <= 0) return false;
-      missing -= static_cast<std::size_t>(n);
+    zeroed_ = false;  // the watchdog watches again
+    if (writes(function)) {
+      sync_after_write(function);
+      publish_inputs();
     }
-    return true;
+  }
+
+  enum class frame_read : std::uint8_t { complete, closed, broken };
+
+  // One request: the 7 bytes of the MBAP header (transaction, protocol 0, length, unit) and the
+  // PDU its length announces, all within client_timeout of the first byte (a deadline, not a
+  // gap between bytes: a client that dribbles its request holds the server no longer).
+  frame_read read_frame(int client, std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH>& frame,
+                        std::size_t& size) noexcept {
+    const auto deadline = clock::now() + std::chrono::nanoseconds(config_.client_timeout.count());
+    std::size_t have = 0;
+    std::size_t want = 7;
+    while (have < want) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - clock::now()).count();
+      pollfd p{client, POLLIN, 0};
+      if (::poll(&p, 1, static_cast<int>(std::max<long long>(left, 0))) <= 0) return frame_read::broken;
+      const ssize_t n = ::recv(client, frame.data() + have, want - have, 0);
+      if (n <= 0) {
+        if (n < 0 && errno == EINTR) continue;
+        return have == 0 ? frame_read::closed : frame_read::broken;
+      }
+      have += static_cast<std::size_t>(n);
+      if (have == 7 && want == 7) {
+        const unsigned protocol = (static_cast<unsigned>(frame[2]) << 8) | frame[3];
+        const unsigned length = (static_cast<unsigned>(frame[4]) << 8) | frame[5];  // unit identifier + PDU
+        if (protocol != 0 || length < 2 || length > MODBUS_MAX_PDU_LENGTH + 1u) return frame_read::broken;
+        want = 6 + length;
+      }
+    }
+    size = want;
+    return frame_read::complete;
+  }
+
+  // The PDU's length fits its function (as libmodbus reads a request of that function); a
+  // function libmodbus does not serve may have any length (its answer is exception 1).
+  static bool pdu_fits(const std::uint8_t* pdu, std::size_t n) noexcept {
+    switch (pdu[0]) {
+      case 0x01:
+      case 0x02:
+      case 0x03:
+      case 0x04:
+      case 0x05:
+      case 0x06: return n == 5;
+      case 0x0F:
+      case 0x10: return n >= 6 && n == 6u + pdu[5];
+      case 0x11: return n == 1;
+      case 0x16: return n == 7;
+      case 0x17: return n >= 10 && n == 10u + pdu[9];
+      default: return true;
+    }
   }
 
   static constexpr bool writes(std::uint8_t function) noexcept {
@@ -435,16 +445,15 @@ class modbus_server {
     }
   }
 
-  // What the program reads: the holding registers and coils as the data model holds them
-  // (or 0, while the watchdog has expired).
+  // What the program reads: the holding registers and coils as the data model holds them.
   void publish_inputs() noexcept {
     input_area& slot = from_clients_.write_slot();
     const modbus_mapping_t& m = *mapping_;
     for (std::uint32_t r = 0; r < holding_window_.registers(); ++r) {
-      store_register(slot, holding_window_, r, zeroed_ ? std::uint16_t{0} : m.tab_registers[r]);
+      store_register(slot, holding_window_, r, m.tab_registers[r]);
     }
     for (std::uint32_t b = 0; b < coil_window_.bits; ++b) {
-      store_bit(slot, coil_window_, b, !zeroed_ && m.tab_bits[b] != 0);
+      store_bit(slot, coil_window_, b, m.tab_bits[b] != 0);
     }
     from_clients_.publish();
   }
@@ -470,11 +479,17 @@ class modbus_server {
     if (clock::now() - last_valid_ < std::chrono::nanoseconds(config_.watchdog.count())) return;
     zeroed_ = true;
     watchdog_expiries_.fetch_add(1, std::memory_order_relaxed);
+    // CODESYS: "the incoming data is set to zero": the data model's, so that a client that only
+    // reads afterwards does not bring the old set-points back.
+    modbus_mapping_t& m = *mapping_;
+    std::fill_n(m.tab_registers, m.nb_registers, std::uint16_t{0});
+    std::fill_n(m.tab_bits, m.nb_bits, std::uint8_t{0});
     publish_inputs();
   }
 
   modbus_server_config config_;
   image_window holding_window_{}, input_window_{}, coil_window_{}, discrete_window_{};
+  const char* config_error_ = nullptr;        // what make_windows() found wrong
   triple_buffer<input_area> from_clients_{};  // server thread -> cycle start
   triple_buffer<output_area> to_clients_{};   // cycle end -> server thread
 

@@ -1044,7 +1044,7 @@ class mqtt_bridge : public trace_channels<MaxChannels>, private cycle_observer {
   triple_buffer<snapshot> snapshots_{};
   // Bridge -> task: the commands, a single-producer single-consumer ring.
   std::vector<queued_command> queue_;
-  std::atomic<std::uint64_t> queue_head_{0};  // the next to write (the task's)
+  std::atomic<std::uint64_t> queue_head_{0};  // the next to apply (the task owns it)
   std::atomic<std::uint64_t> queue_tail_{0};  // the next free (the bridge's)
   // The task's: which cycle (its generation) wrote each command's variable last.
   std::array<std::uint64_t, MaxCommands> written_in_{};
