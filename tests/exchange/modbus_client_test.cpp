@@ -55,7 +55,7 @@ struct IO_PRG : program<IO_PRG> {
 using client_app = application<task<IO_PRG>, use_image<client_image>>;
 
 client_app make_app() {
-  return client_app{iecoop::task<IO_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0, watchdog{"T#90ms"_iec, 1}},
+  return client_app{iecoop::task<IO_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0, watchdog{"T#300ms"_iec, 1}},
                     use_image<client_image>{}};
 }
 
@@ -106,7 +106,7 @@ void start_polling(client_app& plc, modbus_client<client_image>& client) {
 // Runs cycles in simulated time, each followed by a real millisecond, until `condition` holds
 // between two cycles (at most `timeout`).
 template <class App, class Condition>
-bool run_until(App& plc, Condition condition, std::chrono::milliseconds timeout = 10s) {
+bool run_until(App& plc, Condition condition, std::chrono::milliseconds timeout = 20s) {
   const auto until = std::chrono::steady_clock::now() + timeout;
   while (std::chrono::steady_clock::now() < until) {
     plc.run_for("T#1ms"_iec);
@@ -162,7 +162,9 @@ TEST_CASE(
 
   device.kill(SIGKILL);
   REQUIRE(run_until(plc, [&] { return client.status(0).xConnected == FALSE; }));
-  REQUIRE(run_until(plc, [&] { return client.status(0).xError == TRUE; }));
+  // The poll that finds the connection gone keeps what it read before (a channel read in full
+  // is good data); the next, which cannot connect, gives every channel its error value.
+  REQUIRE(run_until(plc, [&] { return client.status(0).xError == TRUE && prg.wSetpointBack == 7; }));
   CHECK(prg.wSetpointBack == 7);  // safe values
   CHECK(prg.wSpeedBack == 8);
   CHECK(prg.bValveBack == TRUE);
@@ -175,7 +177,7 @@ TEST_CASE(
   wait_until_serving(device, port);
   prg.wCommand = 200;
   REQUIRE(run_until(
-      plc, [&] { return client.status(0).xConnected == TRUE && prg.wSetpointBack == 200; }, 15s));
+      plc, [&] { return client.status(0).xConnected == TRUE && prg.wSetpointBack == 200; }, 30s));
   REQUIRE(run_until(plc, [&] { return client.status(0).xError == FALSE; }));
   CHECK(client.status(0).udiConnects == 2);
   CHECK(prg.wSpeedBack == 201);
@@ -209,17 +211,19 @@ TEST_CASE("modbus_client: an exception response fails its channel only, and is s
 
 TEST_CASE("modbus_client: a device slower than its timeout fails with timeouts, the task never waits for it") {
   const std::uint16_t port = free_port();
-  peer device(remote_io(port, {"--delay", "0.3"}));
+  peer device(remote_io(port, {"--delay", "1.0"}));
   wait_until_serving(device, port);
 
   modbus_device_config d = coupler(port);
-  d.response_timeout = "LTIME#100ms"_iec;
+  d.response_timeout = "LTIME#400ms"_iec;
   client_app plc = make_app();
   modbus_client<client_image> client{{d}};
   start_polling(plc, client);
   {
-    running cycles(plc);  // real time, 1 ms cycles, watchdog 90 ms: a cycle that waited 100 ms for the device faults
-    std::this_thread::sleep_for(1500ms);
+    // Real time, 1 ms cycles, watchdog 300 ms: a cycle that waited for the device would wait
+    // its 400 ms timeout and fault. (300 ms leave room for a machine busy with other tests.)
+    running cycles(plc);
+    std::this_thread::sleep_for(2000ms);
   }
   const modbus_device_status& s = client.status(0);
   CHECK(s.udiTimeouts >= 2);
@@ -227,9 +231,9 @@ TEST_CASE("modbus_client: a device slower than its timeout fails with timeouts, 
   CHECK(s.byModbusError == 0);
   CHECK(plc.get<IO_PRG>().wSetpointBack == 7);
   const task_statistics& t = plc.task("Fast").statistics();
-  CHECK(t.cycles > 500);
+  CHECK(t.cycles > 100);
   CHECK(t.watchdog_overruns == 0);
-  CHECK(t.max_cycle_time < "LTIME#90ms"_iec);
+  CHECK(t.max_cycle_time < "LTIME#300ms"_iec);
   CHECK(plc.faulted_task() == nullptr);
 }
 

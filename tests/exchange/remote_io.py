@@ -8,8 +8,8 @@ Its data model has N of each: coils, discrete inputs, holding registers, input r
 addressed from 0. It is wired as a loopback coupler: every 2 ms its inputs follow its outputs
 (discrete input i := coil i, input register i := holding register i, for i < 16); input register
 20 counts up every 10 ms (live data). With --delay every read of its data takes that long (a
-slow device: the responses come late). It prints "remote_io: serving on PORT" once it serves
-and runs until killed.
+slow device: the responses come late). It prints "remote_io: serving on PORT" when it is about
+to listen (wait for the port too) and runs until killed.
 """
 import argparse
 import asyncio
@@ -60,7 +60,11 @@ async def main():
 
     store = ModbusSlaveContext(di=block(), co=block(), hr=block(), ir=block(), zero_mode=True)
     context = ModbusServerContext(slaves=store, single=True)
-    server = await StartAsyncTcpServer(context=context, address=("127.0.0.1", args.port), defer_start=True)
+    # allow_reuse_address: a coupler started again binds its port at once, even while connections
+    # of the one before linger in TIME_WAIT (pymodbus's default is not to).
+    server = await StartAsyncTcpServer(
+        context=context, address=("127.0.0.1", args.port), defer_start=True, allow_reuse_address=True
+    )
     asyncio.get_running_loop().create_task(wiring(store))
     print(f"remote_io: serving on {args.port}", flush=True)
     await server.serve_forever()
