@@ -499,6 +499,25 @@ TEST_CASE("modbus_server: the watchdog sets the holding registers to 0 when no c
   REQUIRE(eventually([&] { return server.statistics().watchdog_expiries == expired + 2; }, 3s));
 }
 
+TEST_CASE("modbus_server: the watchdog closes the connections when told (CODESYS: closing the TCP socket)") {
+  for (const bool closes : {false, true}) {
+    CAPTURE(closes);
+    modbus_server_config config = config_on_free_port();
+    config.watchdog = "LTIME#300ms"_iec;
+    config.watchdog_closes_connections = closes;
+    modbus_server<server_image> server{config};
+    REQUIRE(server.start() == nullptr);
+    const int s = connect_to(server.port());  // a client that connected and went quiet
+    REQUIRE(s >= 0);
+    REQUIRE(send_all(s, frame({0x06, 0, 0, 0x12, 0x34})));  // FC 6: holding register 0 := 16#1234
+    REQUIRE(receive(s).size() == 12);
+    REQUIRE(eventually([&] { return server.statistics().watchdog_expiries == 1; }, 3s));
+    CHECK(closed_by_server(s, 500ms) == closes);
+    CHECK(eventually([&] { return server.statistics().clients == (closes ? 0U : 1U); }, 3s));
+    ::close(s);
+  }
+}
+
 TEST_CASE("modbus_server: a configuration that does not fit the image is refused by start(), with the rule") {
   auto start_with = [](auto change) {
     modbus_server_config config = config_on_free_port();

@@ -82,6 +82,9 @@ struct modbus_server_config {
   /// CODESYS's "Watchdog": when no request has been answered without exception for this long,
   /// the holding registers and coils (what the program reads) go to 0. 0: off.
   LTIME watchdog{0};
+  /// CODESYS's "Closing the TCP socket": when the watchdog expires, the connections are closed
+  /// too (a client that hangs on a half-open connection connects anew).
+  bool watchdog_closes_connections = false;
   /// How many clients may be connected at once; one more is refused (closed at once).
   int max_clients = 8;
   /// A request must arrive in full within this of its first byte, and a reply must leave
@@ -291,8 +294,8 @@ class modbus_server {
       polled.push_back({listen_socket_, POLLIN, 0});
       for (const int client : client_sockets_) polled.push_back({client, POLLIN, 0});
       const int ready = ::poll(polled.data(), polled.size(), poll_timeout_ms());
-      check_watchdog();
-      if (ready <= 0) continue;
+      const bool closed = check_watchdog();
+      if (ready <= 0 || closed) continue;  // (closed: `polled` names sockets that are gone)
       if ((polled[0].revents & POLLIN) != 0) break;
       for (std::size_t i = 2; i < polled.size(); ++i) {
         if (polled[i].revents != 0) serve_client(polled[i].fd);
@@ -474,9 +477,10 @@ class modbus_server {
     }
   }
 
-  void check_watchdog() noexcept {
-    if (config_.watchdog.count() == 0 || zeroed_) return;
-    if (clock::now() - last_valid_ < std::chrono::nanoseconds(config_.watchdog.count())) return;
+  // TRUE if it closed the connections.
+  bool check_watchdog() noexcept {
+    if (config_.watchdog.count() == 0 || zeroed_) return false;
+    if (clock::now() - last_valid_ < std::chrono::nanoseconds(config_.watchdog.count())) return false;
     zeroed_ = true;
     watchdog_expiries_.fetch_add(1, std::memory_order_relaxed);
     // CODESYS: "the incoming data is set to zero": the data model's, so that a client that only
@@ -485,6 +489,11 @@ class modbus_server {
     std::fill_n(m.tab_registers, m.nb_registers, std::uint16_t{0});
     std::fill_n(m.tab_bits, m.nb_bits, std::uint8_t{0});
     publish_inputs();
+    if (!config_.watchdog_closes_connections || client_sockets_.empty()) return false;
+    for (const int client : client_sockets_) ::close(client);
+    client_sockets_.clear();
+    clients_.store(0, std::memory_order_relaxed);
+    return true;
   }
 
   modbus_server_config config_;
