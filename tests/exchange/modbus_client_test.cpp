@@ -103,6 +103,28 @@ void start_polling(client_app& plc, modbus_client<client_image>& client) {
   REQUIRE(plc.start());
 }
 
+// A pymodbus coupler on a free port (started with `options`), and the application whose client
+// polls it (coupler(port), changed by `adjust`), started.
+struct coupler_rig {
+  explicit coupler_rig(std::vector<std::string> options = {}, void (*adjust)(modbus_device_config&) = nullptr)
+      : device(remote_io(port, std::move(options))), client({configured(port, adjust)}) {
+    wait_until_serving(device, port);
+    start_polling(plc, client);
+  }
+
+  std::uint16_t port = free_port();
+  peer device;
+  client_app plc = make_app();
+  modbus_client<client_image> client;
+
+ private:
+  static modbus_device_config configured(std::uint16_t port, void (*adjust)(modbus_device_config&)) {
+    modbus_device_config d = coupler(port);
+    if (adjust != nullptr) adjust(d);
+    return d;
+  }
+};
+
 // Runs cycles in simulated time, each followed by a real millisecond, until `condition` holds
 // between two cycles (at most `timeout`).
 template <class App, class Condition>
@@ -119,13 +141,9 @@ bool run_until(App& plc, Condition condition, std::chrono::milliseconds timeout 
 }  // namespace
 
 TEST_CASE("modbus_client: outputs reach a pymodbus coupler, its inputs come back into %I, with the device's status") {
-  const std::uint16_t port = free_port();
-  peer device(remote_io(port));
-  wait_until_serving(device, port);
-
-  client_app plc = make_app();
-  modbus_client<client_image> client{{coupler(port)}};
-  start_polling(plc, client);
+  coupler_rig rig;
+  client_app& plc = rig.plc;
+  modbus_client<client_image>& client = rig.client;
   IO_PRG& prg = plc.get<IO_PRG>();
 
   prg.wCommand = 4242;
@@ -148,13 +166,11 @@ TEST_CASE("modbus_client: outputs reach a pymodbus coupler, its inputs come back
 
 TEST_CASE(
     "modbus_client: the device killed mid-run, then started again: error values, diagnostics, reconnection by itself") {
-  const std::uint16_t port = free_port();
-  peer device(remote_io(port));
-  wait_until_serving(device, port);
-
-  client_app plc = make_app();
-  modbus_client<client_image> client{{coupler(port)}};
-  start_polling(plc, client);
+  coupler_rig rig;
+  peer& device = rig.device;
+  const std::uint16_t port = rig.port;
+  client_app& plc = rig.plc;
+  modbus_client<client_image>& client = rig.client;
   IO_PRG& prg = plc.get<IO_PRG>();
   prg.wCommand = 100;
   REQUIRE(run_until(plc, [&] { return prg.wSetpointBack == 100 && prg.wCounter != 0; }));
@@ -184,17 +200,13 @@ TEST_CASE(
 }
 
 TEST_CASE("modbus_client: an exception response fails its channel only, and is shown with its code") {
-  const std::uint16_t port = free_port();
-  peer device(remote_io(port, {"--size", "30"}));
-  wait_until_serving(device, port);
-
-  modbus_device_config d = coupler(port);
-  // Input registers 28..31 of a device that has 0..29: exception 2, illegal data address.
-  d.reads.push_back(
-      {.table = modbus_table::input_registers, .remote = 28, .count = 4, .image = "%IW20", .safe = {0xDEAD, 0xBEEF}});
-  client_app plc = make_app();
-  modbus_client<client_image> client{{d}};
-  start_polling(plc, client);
+  coupler_rig rig({"--size", "30"}, [](modbus_device_config& d) {
+    // Input registers 28..31 of a device that has 0..29: exception 2, illegal data address.
+    d.reads.push_back(
+        {.table = modbus_table::input_registers, .remote = 28, .count = 4, .image = "%IW20", .safe = {0xDEAD, 0xBEEF}});
+  });
+  client_app& plc = rig.plc;
+  modbus_client<client_image>& client = rig.client;
   IO_PRG& prg = plc.get<IO_PRG>();
   prg.wCommand = 31;
   REQUIRE(run_until(plc, [&] { return prg.wSetpointBack == 31 && client.status(0).udiExceptions >= 3; }));
@@ -210,15 +222,9 @@ TEST_CASE("modbus_client: an exception response fails its channel only, and is s
 }
 
 TEST_CASE("modbus_client: a device slower than its timeout fails with timeouts, the task never waits for it") {
-  const std::uint16_t port = free_port();
-  peer device(remote_io(port, {"--delay", "1.0"}));
-  wait_until_serving(device, port);
-
-  modbus_device_config d = coupler(port);
-  d.response_timeout = "LTIME#400ms"_iec;
-  client_app plc = make_app();
-  modbus_client<client_image> client{{d}};
-  start_polling(plc, client);
+  coupler_rig rig({"--delay", "1.0"}, [](modbus_device_config& d) { d.response_timeout = "LTIME#400ms"_iec; });
+  client_app& plc = rig.plc;
+  modbus_client<client_image>& client = rig.client;
   {
     // Real time, 1 ms cycles, watchdog 300 ms: a cycle that waited for the device would wait
     // its 400 ms timeout and fault. (300 ms leave room for a machine busy with other tests.)

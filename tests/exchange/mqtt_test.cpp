@@ -6,6 +6,7 @@
 
 #include <iecoop/exchange/mqtt.hpp>
 #include <iecoop/iecoop.hpp>
+#include <iecoop/testing.hpp>
 
 #include "broker.hpp"
 #include "peer.hpp"
@@ -76,23 +77,6 @@ struct IO_PRG : program<IO_PRG> {
     bSeenPulse = bPulse;
     if (bPulse) diPulseCycles = diPulseCycles + 1;
   }
-};
-
-/// Counts the faults raised while it lives (instead of the default handler's abort).
-class fault_counter {
- public:
-  fault_counter() : previous_(set_fault_handler([](const fault_info&) { ++counted(); })) { counted() = 0; }
-  ~fault_counter() { set_fault_handler(previous_); }
-  fault_counter(const fault_counter&) = delete;
-  fault_counter& operator=(const fault_counter&) = delete;
-  [[nodiscard]] int count() const { return counted(); }
-
- private:
-  static int& counted() {
-    static int n = 0;
-    return n;
-  }
-  fault_handler previous_;
 };
 
 LTIME ms(std::uint64_t n) { return LTIME::from_ticks(n * 1'000'000U); }
@@ -339,7 +323,7 @@ TEST_SUITE("MQTT bridge") {
       CHECK(mqtt.start() != nullptr);  // a wildcard in a topic
     }
     {
-      fault_counter faults;
+      testing::expect_faults faults;  // the test kit's: faults recorded, not failing the case
       mqtt_bridge<4, 1> mqtt{test_config(b, "p", "x")};
       CHECK(mqtt.command("IO_PRG.iSetpoint", io.iSetpoint));
       CHECK_FALSE(mqtt.command("IO_PRG.bPulse", io.bPulse));  // MaxCommands is 1

@@ -729,7 +729,9 @@ class mqtt_bridge : public trace_channels<MaxChannels>, private cycle_observer {
     s.cycle = cycle;
     s.valid = true;
     snapshots_.publish();
-    snapshots_taken_.fetch_add(1, std::memory_order_relaxed);
+    // The task's thread is the only writer: a plain load and store, no locked read-modify-write
+    // in the cyclic call (other threads only read the counter).
+    snapshots_taken_.store(snapshots_taken_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
   }
 
   // Before the cycle's programs: the queued commands in order, each variable at most once.
@@ -749,7 +751,7 @@ class mqtt_bridge : public trace_channels<MaxChannels>, private cycle_observer {
     }
     if (applied != 0) {
       queue_head_.store(head, std::memory_order_release);
-      applied_.fetch_add(applied, std::memory_order_relaxed);
+      applied_.store(applied_.load(std::memory_order_relaxed) + applied, std::memory_order_relaxed);  // (one writer)
     }
   }
 
