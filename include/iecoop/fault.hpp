@@ -36,6 +36,8 @@ enum class fault_kind : std::uint8_t {
   out_of_range,          ///< a value outside its subrange type (CODESYS: CheckRangeSigned/Unsigned)
   null_pointer,          ///< a dereferenced null POINTER or invalid REFERENCE (CODESYS: CheckPointer)
   unsafe_chart,          ///< an SFC transition activated a step that was active already (an unsafe chart)
+  lifecycle,             ///< FB_Init or FB_Exit could not run on the whole block (a constructor or destructor
+                         ///< of a derived block does not call run_fb_init / run_fb_exit)
 };
 
 /// A fault as the handler sees it. `message` points to a string literal; `task` and `pou`
@@ -77,6 +79,7 @@ using fault_handler = void (*)(const fault_info&);
     case fault_kind::out_of_range: return "value out of subrange";
     case fault_kind::null_pointer: return "null pointer dereferenced";
     case fault_kind::unsafe_chart: return "unsafe SFC chart";
+    case fault_kind::lifecycle: return "FB_Init or FB_Exit not run on the whole block";
   }
   return "unknown fault";
 }

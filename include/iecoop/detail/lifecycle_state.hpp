@@ -4,6 +4,8 @@
 // IWYU pragma: private, include <iecoop/pou/lifecycle.hpp>
 #pragma once
 
+#include <iecoop/detail/construction.hpp>
+
 namespace iecoop::detail {
 
 struct lifecycle_flags {
@@ -18,11 +20,15 @@ struct lifecycle_flags {
 /// while no task runs.
 inline lifecycle_flags current_lifecycle{};
 
-/// Sets the flags for the duration of a scope.
+/// Sets the flags for the duration of a scope. At its end, a derived block constructed in it
+/// whose constructor did not run its bases' FB_Init is reported (detail/construction.hpp).
 class lifecycle_scope {
  public:
   explicit lifecycle_scope(lifecycle_flags flags) noexcept : saved_(current_lifecycle) { current_lifecycle = flags; }
-  ~lifecycle_scope() { current_lifecycle = saved_; }
+  ~lifecycle_scope() {
+    current_lifecycle = saved_;
+    settle_owed(nullptr);
+  }
   lifecycle_scope(const lifecycle_scope&) = delete;
   lifecycle_scope& operator=(const lifecycle_scope&) = delete;
 

@@ -15,6 +15,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/interface.hpp>
+#include <iecoop/pou/lifecycle.hpp>
 #include <iecoop/pou/named_arguments.hpp>
 #include <iecoop/pou/variables.hpp>
 
@@ -52,10 +53,17 @@ struct virtual_body_probe : Base {
  * `this->M()` is `THIS^.M()` (the most derived override). Base must be polymorphic: CODESYS
  * dispatches the body and methods of a block hierarchy virtually, so declare
  * `virtual void body()` (and `virtual` methods) in the base and `override` them here.
- * `using extends::extends;` makes Derived take Base's constructor (FB_Init) parameters.
+ * `using extends::extends;` makes Derived take Base's constructors; where a level has an
+ * FB_Init, give Derived a constructor of its own that calls run_fb_init(*this, ...) instead
+ * (an inherited constructor cannot, which is reported as fault_kind::lifecycle).
  */
+// The first and last bases mark where Base's construction as a part of Derived begins and
+// ends, so that FB_Init and FB_Exit run on the whole block (pou/lifecycle.hpp); both are empty.
 template <class Derived, class Base, class Interfaces = implements<>>
-class extends : public detail::interface_layer_t<Derived, Base, Interfaces>, public detail::block_calls<Derived> {
+class extends : detail::base_construction_begins<Base>,
+                public detail::interface_layer_t<Derived, Base, Interfaces>,
+                public detail::block_calls<Derived>,
+                detail::base_construction_ends<Derived, Base> {
   using layer = detail::interface_layer_t<Derived, Base, Interfaces>;
 
   static_assert(std::is_polymorphic_v<Base>,

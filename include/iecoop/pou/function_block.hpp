@@ -29,6 +29,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/interface.hpp>
@@ -39,9 +40,94 @@
 
 namespace iecoop {
 
+namespace detail {
+
+/// The lifecycle methods iecoop calls level by level.
+enum class lifecycle_method : unsigned char { fb_init, fb_exit };
+/// What a level of a block declares of a lifecycle method.
+enum class declaration : unsigned char {
+  none,           ///< neither it nor a level below
+  own,            ///< one method of its own (its signature known)
+  inherited,      ///< none of its own; a level below declares one
+  unaddressable,  ///< a template, or overloads: called only as an ordinary call
+};
+
+template <class M>
+struct method_signature {
+  static constexpr bool known = false;
+  using owner = void;
+  using parameters = void;
+};
+template <class C, class R, class... P>
+struct method_signature<R (C::*)(P...)> {
+  static constexpr bool known = true;
+  using owner = C;
+  using parameters = type_list<P...>;
+};
+template <class C, class R, class... P>
+struct method_signature<R (C::*)(P...) noexcept> : method_signature<R (C::*)(P...)> {};
+
+// A class with a member of each lifecycle method's name: derived together with a block, the
+// name is ambiguous exactly when the block has a member of that name too (found even when
+// the block's method is a template or overloaded, which has no address).
+struct fb_init_name {
+  int FB_Init;
+};
+struct fb_exit_name {
+  int FB_Exit;
+};
+template <class L>
+struct fb_init_name_probe : L, fb_init_name {};
+template <class L>
+struct fb_exit_name_probe : L, fb_exit_name {};
+
+}  // namespace detail
+
 /// The door through which iecoop calls a block's body and lifecycle methods. A block that
 /// keeps them private grants access with `friend struct iecoop::block_access;`.
 struct block_access {
+  /// What level L declares of a lifecycle method (detail::declaration).
+  template <class L, detail::lifecycle_method M>
+  static constexpr detail::declaration declares_lifecycle() noexcept {
+    if constexpr (M == detail::lifecycle_method::fb_init) {
+      if constexpr (requires { &L::FB_Init; }) {
+        return classify<L, decltype(&L::FB_Init)>();
+      } else {
+        return named_but_unaddressable<L, M>();
+      }
+    } else {
+      if constexpr (requires { &L::FB_Exit; }) {
+        return classify<L, decltype(&L::FB_Exit)>();
+      } else {
+        return named_but_unaddressable<L, M>();
+      }
+    }
+  }
+  /// The signature of level L's lifecycle method M (method_signature).
+  template <class L, detail::lifecycle_method M>
+  struct lifecycle_signature_of {
+    using type = detail::method_signature<void>;
+  };
+  template <class L>
+    requires requires { &L::FB_Init; }
+  struct lifecycle_signature_of<L, detail::lifecycle_method::fb_init> {
+    using type = detail::method_signature<decltype(&L::FB_Init)>;
+  };
+  template <class L, detail::lifecycle_method M>
+  using lifecycle_signature = typename lifecycle_signature_of<L, M>::type;
+
+  /// Level L's own FB_Init (not an override: CODESYS runs each level's) on the whole block.
+  template <class L, class B, class... P>
+  static auto fb_init_of(B& block, P&&... params)
+      -> decltype(static_cast<L&>(block).L::FB_Init(std::forward<P>(params)...)) {
+    return static_cast<L&>(block).L::FB_Init(std::forward<P>(params)...);
+  }
+  /// Level L's own FB_Exit on the whole block.
+  template <class L, class B>
+  static auto fb_exit_of(B& block, BOOL in_copy_code) -> decltype(static_cast<L&>(block).L::FB_Exit(in_copy_code)) {
+    return static_cast<L&>(block).L::FB_Exit(in_copy_code);
+  }
+
   template <class B>
   static auto body(B& block) -> decltype(block.body()) {
     return block.body();
@@ -66,6 +152,37 @@ struct block_access {
              std::is_same_v<decltype(&B::body), void (B::*)() noexcept>;
     } else {
       return false;
+    }
+  }
+
+ private:
+  /// L has a member of the probe's name that has no address (a template, or overloads).
+  template <class L, detail::lifecycle_method M>
+  static constexpr detail::declaration named_but_unaddressable() noexcept {
+    if constexpr (std::is_final_v<L>) {
+      // A FINAL block cannot be probed by derivation; it is no base level, so its own FB_Init
+      // (found by run_fb_init with the arguments at hand) or FB_Exit is an ordinary call.
+      if constexpr (M == detail::lifecycle_method::fb_exit && requires(L& l) { fb_exit(l, BOOL{}); }) {
+        return detail::declaration::unaddressable;
+      }
+      return detail::declaration::none;
+    } else if constexpr (M == detail::lifecycle_method::fb_init) {
+      if constexpr (requires { &detail::fb_init_name_probe<L>::FB_Init; }) return detail::declaration::none;
+      return detail::declaration::unaddressable;
+    } else {
+      if constexpr (requires { &detail::fb_exit_name_probe<L>::FB_Exit; }) return detail::declaration::none;
+      return detail::declaration::unaddressable;
+    }
+  }
+  template <class L, class Pointer>
+  static constexpr detail::declaration classify() noexcept {
+    using signature = detail::method_signature<Pointer>;
+    if constexpr (!signature::known) {
+      return detail::declaration::unaddressable;  // const, volatile or ref-qualified: called as an ordinary call
+    } else if constexpr (std::is_same_v<typename signature::owner, L>) {
+      return detail::declaration::own;
+    } else {
+      return detail::declaration::inherited;
     }
   }
 };

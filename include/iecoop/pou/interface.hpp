@@ -31,6 +31,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/construction.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/meta.hpp>
@@ -195,9 +196,16 @@ struct first_of<type_list<First, Rest...>> {
 
 /// What a block without a base block stands on: nothing (a type of its own for each block,
 /// so that a block and its first member never share an empty base and the member stays at
-/// offset 0).
+/// offset 0). Its construction tells a derived block under construction where its bottom
+/// level lies (detail/construction.hpp).
 template <class Self>
-struct no_block {};
+struct no_block {
+  constexpr no_block() noexcept {
+    if (!std::is_constant_evaluated()) root_constructed(this);
+  }
+  constexpr no_block(const no_block&) noexcept = default;
+  constexpr no_block& operator=(const no_block&) noexcept = default;
+};
 
 template <class Self, class Base, class Interfaces>
 struct interface_layer {
