@@ -14,7 +14,9 @@
 // Each cycle: the cycle clock is set to now(), forced values are written, the body runs,
 // forced values are written again, now() moves on by the cycle time. A fault the body cannot
 // go past (a call through an unassigned interface) ends the body's call; the next cycle calls
-// it again.
+// it again. The body runs in a task of its own (current_task(), <iecoop/runtime/task_info.hpp>):
+// "testing::cycles" (set_task_name() renames it), cyclic with the cycle time, priority 31, its
+// cycles taking no time.
 // IWYU pragma: private, include <iecoop/testing.hpp>
 #pragma once
 
@@ -22,6 +24,8 @@
 #include <cstdint>
 #include <type_traits>
 
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/runtime/task_info.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
 #include <iecoop/testing/driver.hpp>
 #include <iecoop/testing/faults.hpp>
@@ -59,22 +63,39 @@ class cycles : public driver<cycles<Body>> {
 
   /// n cycles (the drivers' step() and friends call this).
   void run_cycles(std::uint64_t n) {
+    using task_driver = iecoop::detail::task_info_driver;
     for (std::uint64_t i = 0; i < n; ++i) {
       cycle_clock::set(now_);
-      this->forces_.apply_at_start();
-      detail::call_guarded(body_);  // a call through an unassigned interface ends it (faults.hpp)
-      this->forces_.apply_at_end();
+      task_driver::configure(task_,
+                             task_settings{.name = task_name_, .kind = task_kind::cyclic, .interval = cycle_time_});
+      task_driver::begin(task_, now_);
+      {
+        const iecoop::detail::current_task_scope current(task_);
+        this->forces_.apply_at_start();
+        detail::call_guarded(body_);  // a call through an unassigned interface ends it (faults.hpp)
+        this->forces_.apply_at_end();
+      }
+      task_driver::end(task_, now_);
       now_ = now_ + cycle_time_;
       ++cycle_;
       this->stepped();
     }
   }
 
+  /// The body's task, as current_task() shows it in the body: its cycles, their start, the
+  /// first-cycle flag, statistics().
+  [[nodiscard]] const task_info& task() const noexcept { return task_; }
+  /// Names the body's task (current_task().name(), TwinCAT's TaskName) from the next cycle on;
+  /// `name` must outlive the driver (a string literal).
+  void set_task_name(const char* name) noexcept { task_name_ = name; }
+
  private:
   Body body_;
   LTIME cycle_time_;
   LTIME now_;
   std::uint64_t cycle_ = 0;
+  const char* task_name_ = "testing::cycles";
+  task_info task_;
 };
 
 template <class B>
