@@ -275,6 +275,72 @@ class checker {
     }
   }
 
+  // --- Initial values -----------------------------------------------------------------
+
+  /// A C++ scalar (an enum, an arithmetic type, a pointer) or a built-in array of them: a
+  /// variable of it that is default-initialised is undefined.
+  static bool is_raw_scalar(CXType t) {
+    t = clang_getCanonicalType(t);
+    while (t.kind == CXType_ConstantArray) t = clang_getCanonicalType(clang_getArrayElementType(t));
+    if (t.kind == CXType_Enum || t.kind == CXType_Pointer || t.kind == CXType_MemberPointer) return true;
+    return t.kind >= CXType_FirstBuiltin && t.kind <= CXType_LastBuiltin && t.kind != CXType_Void;
+  }
+
+  /// A declaration's initialiser: an expression among its children (`= E::A`, `{}`).
+  static bool has_initialiser(CXCursor declaration) {
+    const std::vector<CXCursor> parts = children(declaration);
+    return std::any_of(parts.begin(), parts.end(),
+                       [](CXCursor part) { return clang_isExpression(clang_getCursorKind(part)) != 0; });
+  }
+
+  static std::string type_spelling(CXCursor declaration) {
+    return text(clang_getTypeSpelling(clang_getCursorType(declaration)));
+  }
+
+  /// Check 5: a member of a C++ scalar type without an initial value, in a block or a STRUCT
+  /// (a class without constructors of its own) — or in a class whose constructors do not
+  /// initialise it. Unions state their own constructor (docs/porting-guide.md) and are left out.
+  void check_uninitialised_members(CXCursor cls) {
+    if (clang_getCursorKind(cls) == CXCursor_ClassTemplate) return;  // its members' types are not known yet
+    std::set<std::string> initialised;  // the members a constructor's initialiser list names
+    bool has_constructor = false;       // other than the copy and move constructors
+    for (const CXCursor member : children(cls)) {
+      if (clang_getCursorKind(member) != CXCursor_Constructor) continue;
+      if (clang_CXXConstructor_isCopyConstructor(member) != 0 || clang_CXXConstructor_isMoveConstructor(member) != 0) {
+        continue;
+      }
+      has_constructor = true;
+      for (const CXCursor part : children(member)) {
+        if (clang_getCursorKind(part) == CXCursor_MemberRef) initialised.insert(usr(clang_getCursorReferenced(part)));
+      }
+    }
+    if (has_constructor && !info(cls).is_block) return;  // a class of its own making, not a STRUCT
+    for (const CXCursor member : children(cls)) {
+      if (clang_getCursorKind(member) != CXCursor_FieldDecl || !is_raw_scalar(clang_getCursorType(member))) continue;
+      if (has_initialiser(member) || initialised.count(usr(member)) != 0) continue;
+      const std::string name = class_name(cls) + "::" + spelling(member);
+      report(member, name + " (" + type_spelling(member) + ") has no initial value: C++ leaves it undefined wherever " +
+                         class_name(cls) +
+                         " is default-initialised (a local variable, a member of a block declared as one), where ST "
+                         "starts it at 0, FALSE or its enumeration's first component; write its initial value (" +
+                         spelling(member) + " = ...), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
+    }
+  }
+
+  /// Check 5 for a function's local variable (ST's VAR_TEMP, a FUNCTION's VAR) of a C++ scalar
+  /// type without an initial value.
+  void check_uninitialised_local(CXCursor variable, const code_context* context) {
+    if (context == nullptr || clang_Cursor_getStorageClass(variable) == CX_SC_Static) return;
+    if (clang_getCursorKind(clang_getCursorSemanticParent(variable)) == CXCursor_TranslationUnit) return;
+    if (!is_raw_scalar(clang_getCursorType(variable)) || has_initialiser(variable)) return;
+    if (clang_Cursor_hasVarDeclGlobalStorage(variable) == 1) return;
+    report(variable, context_name(context) + ": the local variable " + spelling(variable) + " (" +
+                         type_spelling(variable) +
+                         ") has no initial value: C++ leaves it undefined until it is assigned, where ST starts a "
+                         "variable at 0, FALSE or its enumeration's first component; write its initial value (" +
+                         spelling(variable) + " = ...), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
+  }
+
   // --- Code ---------------------------------------------------------------------------
 
   /// The variables of a block's method, from its `args<Vars>` parameters.
@@ -458,7 +524,10 @@ class checker {
   void walk(CXCursor c) {
     const CXCursorKind kind = clang_getCursorKind(c);
     if (clang_isDeclaration(kind) != 0 && !is_user_location(clang_getCursorLocation(c))) return;
-    if (is_class_kind(kind) && clang_isCursorDefinition(c) != 0) check_block_class(c);
+    if (is_class_kind(kind) && clang_isCursorDefinition(c) != 0) {
+      check_block_class(c);
+      check_uninitialised_members(c);
+    }
     if (is_function_kind(kind)) {
       if (clang_isCursorDefinition(c) == 0) return;  // a declaration only: nothing to check
       CXCursor owner = clang_getCursorSemanticParent(c);
@@ -474,6 +543,13 @@ class checker {
       check_builtin_write(c, context);
     }
     if (kind == CXCursor_MemberRefExpr) check_shadowed(c, context);
+    if (kind == CXCursor_VarDecl && loop_variables_.count(clang_hashCursor(c)) == 0)
+      check_uninitialised_local(c, context);
+    if (kind == CXCursor_CXXForRangeStmt) {  // `for (E e : a)`: the loop variable is initialised by the loop
+      for (const CXCursor child : children(c)) {
+        if (clang_getCursorKind(child) == CXCursor_VarDecl) loop_variables_.insert(clang_hashCursor(child));
+      }
+    }
     for (const CXCursor child : children(c)) walk(child);
   }
 
@@ -482,6 +558,7 @@ class checker {
   std::map<CXFile, bool> user_files_;
   std::map<std::string, class_info> classes_;
   std::vector<code_context> contexts_;
+  std::set<unsigned> loop_variables_;
   std::vector<finding> findings_;
 };
 
