@@ -36,3 +36,20 @@ struct FB_Params : function_block<FB_Params> {
   E_State eForgot;
   void body() {}
 };
+
+struct F_Scale_vars {
+  INT iIn;
+};
+inline constexpr function F_Scale = [](args<F_Scale_vars> in) -> INT {
+  double rFactor;  // VAR rFactor : LREAL; END_VAR
+  rFactor = 2.0;
+  return INT(static_cast<INT::rep>(in.iIn.value() * rFactor));
+};
+
+inline int parse_mode(const char* text) {
+  E_State eMode;  // an enumeration: reported outside a POU too
+  int n = 0;
+  eMode = text[0] == 'r' ? E_State::Run : E_State::Idle;
+  n = static_cast<int>(eMode);
+  return n;
+}

@@ -1,6 +1,8 @@
 // The clean twin of uninitialised.cpp: every variable states its initial value, or has an IEC
 // type (whose own initial value is ST's), or is initialised by a constructor; a union states
 // its constructor; a class with constructors of its own is not a STRUCT.
+#include <cstdlib>
+
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
 
@@ -54,3 +56,18 @@ struct FB_Params : function_block<FB_Params> {
   E_State eMode;
   void body() {}
 };
+
+struct F_Scale_vars {
+  INT iIn;
+};
+inline constexpr function F_Scale = [](args<F_Scale_vars> in) -> INT {
+  LREAL rFactor;
+  rFactor = 2.0;
+  return LREAL_TO_INT(INT_TO_LREAL(in.iIn) * rFactor);
+};
+
+inline long parse_number(const char* text) {  // C++ around a port: its int locals are C++'s
+  char* end;
+  const long n = std::strtol(text, &end, 10);
+  return *end == '\0' ? n : -1;
+}

@@ -1,7 +1,10 @@
-// EXPECT: iecoop: the VAR_INPUT or VAR_OUTPUT spelled in `Pin` has a C++ type \(an enum, int, bool, a pointer\) and no
-// initial value EXPECT: 'e', 'S', 't', 'a', 't', 'e' EXPECT-ERRORS: 1 A VAR_INPUT of an enumeration is a plain C++ enum
-// member: without an initial value C++ leaves it undefined where the block is default-initialised (a local, a member),
-// where ST starts it at its first component. iecoop refuses such a pin when the block is called.
+// EXPECT: iecoop: the VAR_INPUT or VAR_OUTPUT spelled in `Pin` has a C\+\+ type \(an enum, int, bool, a pointer\)
+// EXPECT: 'e', 'S', 't', 'a', 't', 'e'
+// EXPECT-ERRORS: 1
+// EXPECT-WITHIN: 16
+// A VAR_INPUT of an enumeration is a plain C++ enum member: without an initial value C++
+// leaves it undefined where the block is default-initialised (a local, a member), where ST
+// starts it at its first component. iecoop refuses such a pin when the block is called.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;
 enum class E_State : INT::rep { Idle = 1, Run };

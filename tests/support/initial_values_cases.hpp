@@ -75,6 +75,10 @@ union U_Word {
   constexpr U_Word() : w() {}
 };
 
+/// A process image of its own: the located variables below read what nothing else wrote.
+struct initial_values_image_tag {};
+using image = process_image<64, 64, 256, addressing::codesys, initial_values_image_tag>;
+
 struct I_Named : interface_base<I_Named> {
   virtual INT Id() = 0;
 };
@@ -171,6 +175,10 @@ struct FB_All : function_block<FB_All> {
   ARRAY<E_Strict, 1, 3> aeStrict;
   ARRAY<ST_Pos, 1, 2> aStruct;
   E_Five eProtected = E_Five::a;  // a plain enum member states its initial value
+  // Located variables: their values live in the process image, whose bytes start at 0.
+  [[no_unique_address]] located<INT, "%MW10", image> iMarker;
+  [[no_unique_address]] located<BOOL, "%QX2.1", image> bLamp;
+  [[no_unique_address]] located<REAL, "%ID4", image> rSensor;
 
   using VAR_INPUT = pins<&FB_All::bIn, &FB_All::usIn, &FB_All::uiIn, &FB_All::udIn, &FB_All::ulIn, &FB_All::rIn,
                          &FB_All::lrIn, &FB_All::tIn, &FB_All::ltIn, &FB_All::dIn, &FB_All::todIn, &FB_All::dtIn,
@@ -243,6 +251,9 @@ void check_block(R& report, const FB_All& fb) {
   check_struct(report, fb.aStruct[1]);
   check_struct(report, fb.aStruct[2]);
   check_enum(report, "a plain enum member at its initial value", fb.eProtected, E_Five::a);
+  expect(report, "located %MW INT is 0", fb.iMarker.get().value() == 0);
+  expect(report, "located %QX BOOL is FALSE", !fb.bLamp.get());
+  expect(report, "located %ID REAL is 0.0", fb.rSensor.get() == 0.0f);
 }
 
 // --- A PROGRAM -------------------------------------------------------------------------------

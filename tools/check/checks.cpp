@@ -68,10 +68,13 @@ class checker {
         if (name != "local" && name != "function_block") continue;
         CXFile file = nullptr;
         clang_getExpansionLocation(clang_getCursorLocation(member), &file, nullptr, nullptr, nullptr);
+        // Both are declared in …/include/iecoop/pou/: the library is that directory's parent.
         const std::string path = real_path(file);
         const std::size_t slash = path.rfind('/');
-        if (slash != std::string::npos) {
-          library_dir_ = path.substr(0, slash + 1);
+        const std::size_t parent =
+            slash == std::string::npos || slash == 0 ? std::string::npos : path.rfind('/', slash - 1);
+        if (parent != std::string::npos) {
+          library_dir_ = path.substr(0, parent + 1);
           return;
         }
       }
@@ -327,15 +330,31 @@ class checker {
     }
   }
 
-  /// Check 5 for a function's local variable (ST's VAR_TEMP, a FUNCTION's VAR) of a C++ scalar
-  /// type without an initial value.
+  /// A function or lambda that takes a METHOD's or FUNCTION's variables (`args<Vars>`).
+  static bool takes_args(CXCursor function) {
+    const std::vector<CXCursor> parts = children(function);
+    return std::any_of(parts.begin(), parts.end(), [](CXCursor part) {
+      return clang_getCursorKind(part) == CXCursor_ParmDecl &&
+             is_iecoop_class(class_of(clang_getCursorType(part)), "args");
+    });
+  }
+
+  /// Check 5 for a local variable (ST's VAR_TEMP, a METHOD's or FUNCTION's VAR) of a C++
+  /// scalar type without an initial value: of an enumeration anywhere, of another scalar in
+  /// the code of a POU (a block's member function, a function or lambda taking args<Vars>; the
+  /// C++ around a port, such as main()'s option parsing, is C++'s).
   void check_uninitialised_local(CXCursor variable, const code_context* context) {
-    if (context == nullptr || clang_Cursor_getStorageClass(variable) == CX_SC_Static) return;
-    if (clang_getCursorKind(clang_getCursorSemanticParent(variable)) == CXCursor_TranslationUnit) return;
-    if (!is_raw_scalar(clang_getCursorType(variable)) || has_initialiser(variable)) return;
+    if (clang_Cursor_getStorageClass(variable) == CX_SC_Static) return;
     if (clang_Cursor_hasVarDeclGlobalStorage(variable) == 1) return;
-    report(variable, context_name(context) + ": the local variable " + spelling(variable) + " (" +
-                         type_spelling(variable) +
+    const CXType type = clang_getCursorType(variable);
+    if (!is_raw_scalar(type) || has_initialiser(variable)) return;
+    const bool pou_code =
+        pou_code_depth_ > 0 ||
+        (context != nullptr &&
+         ((!is_null(context->owner_class) && info(context->owner_class).is_block) || takes_args(context->function)));
+    if (clang_getCanonicalType(type).kind != CXType_Enum && !pou_code) return;
+    const std::string where = context == nullptr && pou_code_depth_ > 0 ? "a FUNCTION" : context_name(context);
+    report(variable, where + ": the local variable " + spelling(variable) + " (" + type_spelling(variable) +
                          ") has no initial value: C++ leaves it undefined until it is assigned, where ST starts a "
                          "variable at 0, FALSE or its enumeration's first component; write its initial value (" +
                          spelling(variable) + " = ...), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
@@ -545,6 +564,12 @@ class checker {
     if (kind == CXCursor_MemberRefExpr) check_shadowed(c, context);
     if (kind == CXCursor_VarDecl && loop_variables_.count(clang_hashCursor(c)) == 0)
       check_uninitialised_local(c, context);
+    if (kind == CXCursor_LambdaExpr && takes_args(c)) {  // a FUNCTION: [](args<Vars> in) { ... }
+      ++pou_code_depth_;
+      for (const CXCursor child : children(c)) walk(child);
+      --pou_code_depth_;
+      return;
+    }
     if (kind == CXCursor_CXXForRangeStmt) {  // `for (E e : a)`: the loop variable is initialised by the loop
       for (const CXCursor child : children(c)) {
         if (clang_getCursorKind(child) == CXCursor_VarDecl) loop_variables_.insert(clang_hashCursor(child));
@@ -559,6 +584,7 @@ class checker {
   std::map<std::string, class_info> classes_;
   std::vector<code_context> contexts_;
   std::set<unsigned> loop_variables_;
+  int pou_code_depth_ = 0;  // inside a lambda that takes args<Vars>
   std::vector<finding> findings_;
 };
 

@@ -30,6 +30,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/reflect.hpp>
+#include <iecoop/types/elementary.hpp>  // first: its diagnostics stay near the top of the compiler's output
 #include <iecoop/types/enumeration.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
