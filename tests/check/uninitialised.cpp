@@ -53,3 +53,10 @@ inline int parse_mode(const char* text) {
   n = static_cast<int>(eMode);
   return n;
 }
+
+enum class E_Step : INT::rep { Start = 10, Done };
+inline E_Step eGlobalStep;  // VAR_GLOBAL eGlobalStep : E_Step; END_VAR  (C++: 0, ST: Start)
+struct FB_Stepper : function_block<FB_Stepper> {
+  static inline E_Step eShared;  // VAR_STAT
+  void body() { eShared = E_Step::Done; }
+};

@@ -71,3 +71,12 @@ inline long parse_number(const char* text) {  // C++ around a port: its int loca
   const long n = std::strtol(text, &end, 10);
   return *end == '\0' ? n : -1;
 }
+
+enum class E_Step : INT::rep { Start = 10, Done };
+enum class E_Zero : INT::rep { First, Second };
+inline E_Step eGlobalStep = E_Step::Start;
+inline E_Zero eGlobalZero;  // zero-initialised: its first component
+struct FB_Stepper : function_block<FB_Stepper> {
+  static inline E_Step eShared = E_Step::Start;
+  void body() { eShared = E_Step::Done; }
+};

@@ -344,9 +344,11 @@ class checker {
   /// the code of a POU (a block's member function, a function or lambda taking args<Vars>; the
   /// C++ around a port, such as main()'s option parsing, is C++'s).
   void check_uninitialised_local(CXCursor variable, const code_context* context) {
-    if (clang_Cursor_getStorageClass(variable) == CX_SC_Static) return;
-    if (clang_Cursor_hasVarDeclGlobalStorage(variable) == 1) return;
     const CXType type = clang_getCursorType(variable);
+    if (clang_Cursor_getStorageClass(variable) == CX_SC_Static || clang_Cursor_hasVarDeclGlobalStorage(variable) == 1) {
+      check_static_enumeration(variable, type);
+      return;
+    }
     if (!is_raw_scalar(type) || has_initialiser(variable)) return;
     const bool pou_code =
         pou_code_depth_ > 0 ||
@@ -358,6 +360,32 @@ class checker {
                          ") has no initial value: C++ leaves it undefined until it is assigned, where ST starts a "
                          "variable at 0, FALSE or its enumeration's first component; write its initial value (" +
                          spelling(variable) + " = ...), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
+  }
+
+  /// The first enumerator of an enum type that is not 0 (where C++ zero-initialises a static
+  /// variable of it and ST starts it at the first component), or a null cursor.
+  static CXCursor first_enumerator_not_zero(CXType type) {
+    type = clang_getCanonicalType(type);
+    while (type.kind == CXType_ConstantArray) type = clang_getCanonicalType(clang_getArrayElementType(type));
+    if (type.kind != CXType_Enum) return clang_getNullCursor();
+    const CXCursor declaration = clang_getTypeDeclaration(type);
+    for (const CXCursor enumerator : children(declaration)) {
+      if (clang_getCursorKind(enumerator) != CXCursor_EnumConstantDecl) continue;
+      return clang_getEnumConstantDeclValue(enumerator) != 0 ? enumerator : clang_getNullCursor();
+    }
+    return clang_getNullCursor();
+  }
+
+  /// Check 5 for a static variable (VAR_STAT, a global, a `static` local) of an enumeration
+  /// whose first component is not 0: C++ zero-initialises it.
+  void check_static_enumeration(CXCursor variable, CXType type) {
+    if (clang_isCursorDefinition(variable) == 0 || has_initialiser(variable)) return;
+    const CXCursor first = first_enumerator_not_zero(type);
+    if (is_null(first)) return;
+    report(variable, "the static variable " + spelling(variable) + " (" + type_spelling(variable) +
+                         ") has no initial value: C++ zero-initialises it, to 0, which is not " + spelling(first) +
+                         ", the first component where ST starts it; write its initial value (" + spelling(variable) +
+                         " = ...)");
   }
 
   // --- Code ---------------------------------------------------------------------------
