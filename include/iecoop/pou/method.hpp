@@ -202,10 +202,10 @@ class args : public Vars {
   template <class... A>
     requires(sizeof...(A) > 0 && !(sizeof...(A) == 1 && (std::is_base_of_v<Vars, std::remove_cvref_t<A>> && ...)))
   constexpr args(A&&... arguments) : Vars() {  // implicit: a call's argument list
-    detail::start_variables<Vars>(*this);
     if constexpr (!detail::arguments_valid<Vars, A...>()) {
       detail::report_invalid_arguments<Vars, A...>();
     } else {
+      detail::start_variables<Vars>(*this);
       [&]<std::size_t... K>(std::index_sequence<K...>) {
         (apply<K>(std::forward<A>(arguments)), ...);
       }(std::index_sequence_for<A...>{});

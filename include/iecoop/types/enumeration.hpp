@@ -470,10 +470,14 @@ constexpr void enum_start_unknown() {
 template <class E>
 constexpr E enum_start() noexcept {
   if constexpr (has_initial<E>) {
-    static_assert(std::is_same_v<std::remove_cv_t<decltype(enum_initial<E>)>, E>,
-                  "iecoop: enum_initial<E> is one of E's components; declare it as "
-                  "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
-    return enum_initial<E>;
+    if constexpr (std::is_same_v<std::remove_cv_t<decltype(enum_initial<E>)>, E>) {
+      return enum_initial<E>;
+    } else {
+      static_assert(dependent_false<E>,
+                    "iecoop: enum_initial<E> is one of E's components; declare it as "
+                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+      return E{};
+    }
   } else if constexpr (has_components<E>) {
     static_assert(std::is_same_v<typename components_of<E>::enum_type, E>,
                   "iecoop: enum_components<E> lists the components of another enumeration; list E's");
