@@ -310,7 +310,7 @@ namespace sim {
 using namespace iecoop;
 using demo::E_Motor;
 
-inline simulated_io<> field;           // the PLC's terminals, as the field sees them
+inline simulated_io<> field{window_of<"%IB0", 4>};  // the PLC's terminals, %IB0..%IB3, as the field sees them
 inline E_Motor fitted = E_Motor::VFD;  // the drive actually wired to the belt
 
 // What happened in this millisecond, for the trace ("operator: START, motor on").

@@ -116,10 +116,17 @@ class application {
    * Returns FALSE in the exception state (reset first), and if the RETAIN and PERSISTENT
    * variables need more than the retain memory (a fault of kind invalid_value; the
    * application stays stopped: give it retain_capacity<N>{} with the N the fault names).
+   * Returns FALSE too, before anything else, while the connected I/O driver reports a
+   * configuration error (an io_chain of two drivers that write the same input bits: a fault of
+   * kind invalid_value with its message, which names them).
    */
   bool start(start_mode mode = start_mode::restart) {
     if (scheduler_.state() == scheduler_state::exception) return false;
     if (scheduler_.state() == scheduler_state::running) return true;
+    if (const char* error = scheduler_.cycles().io_configuration_error()) {
+      fault(fault_kind::invalid_value, error);
+      return false;
+    }
     if (!constructed_ && !load(mode)) return false;
     return scheduler_.start();
   }
@@ -247,8 +254,17 @@ class application {
 
   /// Uses `driver` for the I/O from now on: its inputs are latched at the start of each task
   /// cycle, the outputs a cycle changed are written at its end. The driver must outlive its use.
+  /// start() refuses a driver whose configuration_error() reports one (an io_chain of two
+  /// drivers on the same input bits); while the tasks run, connect() refuses it: a fault of
+  /// kind invalid_value, and the driver connected before stays.
   template <IoDriver D>
   void connect(D& driver) noexcept {
+    if (scheduler_.state() == scheduler_state::running) {
+      if (const char* error = detail::configuration_error_of(driver)) {
+        fault(fault_kind::invalid_value, error);
+        return;
+      }
+    }
     scheduler_.cycles().connect(driver);
   }
 
