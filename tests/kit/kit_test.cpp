@@ -101,6 +101,35 @@ TEST_SUITE("cycles") {
     CHECK(fb.count == 3);
   }
 
+  TEST_CASE("durations are given with their unit: TIME, LTIME, a variable of one, std::chrono") {
+    using namespace std::chrono_literals;
+    TON tmr;
+    tmr.PT = "T#300ms"_iec;
+    tmr.IN = TRUE;
+    testing::cycles run{tmr, 100ms};  // std::chrono for the cycle time
+    CHECK(run.cycle_time() == LTIME(TIME(100)));
+    run.advance(tmr.PT);  // a TIME variable: T#300ms, three cycles
+    CHECK(run.cycle() == 3U);
+    CHECK_FALSE(tmr.Q);
+    run.advance(1s);  // ten cycles, not 1 ns's one
+    CHECK(run.cycle() == 13U);
+    CHECK(tmr.Q);
+    run.advance("LTIME#150ms"_iec);  // rounded up to two cycles
+    CHECK(run.cycle() == 15U);
+    run.set_cycle_time(std::chrono::milliseconds(50));
+    run.set_now(2s);
+    run.step();
+    CHECK(cycle_clock::now() == LTIME(TIME(2000)));
+    CHECK(run.now() == LTIME(TIME(2050)));
+    tmr.IN = FALSE;
+    run.step();
+    tmr.IN = TRUE;
+    const testing::wait_result r = run.run_until(tmr.Q, 500ms);  // std::chrono for the timeout
+    REQUIRE(r);
+    CHECK(r.timeout == LTIME(TIME(500)));
+    CHECK(r.waited == LTIME(TIME(350)));  // the edge's cycle, then T#300ms: 7 cycles of T#50ms
+  }
+
   TEST_CASE("a lambda is called as it is, with its arguments") {
     TP pulse;
     BOOL trigger;
@@ -268,6 +297,17 @@ TEST_SUITE("plc") {
     const testing::wait_result r = run_until(io.qxLamp, "T#1s"_iec);
     REQUIRE(r);
     CHECK(r.cycles == 6U);
+  }
+
+  TEST_CASE_FIXTURE(PlcTest, "the application runs for a duration with its unit") {
+    using namespace std::chrono_literals;
+    app().run_for(90ms);
+    CHECK(task("Fast").statistics().cycles == 9U);
+    CHECK(task("Slow").statistics().cycles == 3U);
+    app().run_until("T#150ms"_iec);  // a time since the start
+    CHECK(now() == LTIME(TIME(150)));
+    advance(std::chrono::milliseconds(50));
+    CHECK(now() == LTIME(TIME(200)));
   }
 
   TEST_CASE("a fixture's application starts with it and stops after it") {
@@ -577,6 +617,7 @@ TEST_SUITE("values") {
     FB_State fb;
     CHECK(std::string(doctest::toString(fb.eState).c_str()) == "Fault");
   }
+
 }
 
 TEST_SUITE("forcing") {
