@@ -1,9 +1,10 @@
 # cmake -DPROGRAM=<faulty test program> -DWORK=<dir> -DDISCOVER=<iecoop_testing_add_tests.cmake>
 #       -DCTEST=<ctest> -P check_kit_junit.cmake
-# The test kit's reports, read by a real XML parser (xmllint): tests/kit/faulty.cpp has four
+# The test kit's reports, read by a real XML parser (xmllint): tests/kit/faulty.cpp has five
 # test cases in suite DIV_PRG, of which "divides by zero" faults in task Fast and "prints a
-# WORD as ST does" fails a check. Both ways of running it must report the four, the two
-# failures with their messages, and the cases after the fault as run and passed:
+# WORD as ST does" and "prints ARRAYs as ST does" fail a check. Both ways of running it must
+# report the five, the three failures with their messages, and the cases after the fault as run
+# and passed:
 #   1. the program alone, with doctest's JUnit reporter (one process for all cases);
 #   2. CTest over the tests iecoop_discover_tests registers, with ctest --output-junit.
 cmake_minimum_required(VERSION 3.25)
@@ -37,10 +38,11 @@ if(status EQUAL 0)
   message(FATAL_ERROR "check_kit_junit: the faulty test program passed")
 endif()
 well_formed(${WORK}/doctest.xml)
-xpath(${WORK}/doctest.xml "count(//testcase)" "4")
-xpath(${WORK}/doctest.xml "count(//testcase[failure])" "2")
+xpath(${WORK}/doctest.xml "count(//testcase)" "5")
+xpath(${WORK}/doctest.xml "count(//testcase[failure])" "3")
 xpath(${WORK}/doctest.xml "string(//testcase[@name='divides by zero']/failure/@message)" "${fault_text}")
 xpath(${WORK}/doctest.xml "string(//testcase[@name='prints a WORD as ST does']/failure/@message)" "16#00FF == 254")
+xpath(${WORK}/doctest.xml "string(//testcase[@name='prints ARRAYs as ST does']/failure/@message)" "[1, 2, 4] == [1, 2, 3]")
 xpath(${WORK}/doctest.xml "count(//testcase[@name='runs after' and @status='run' and not(failure)])" "1")
 
 # 2. CTest: one test per case, named <suite>.<case>, from iecoop_discover_tests's script.
@@ -56,12 +58,14 @@ if(status EQUAL 0)
   message(FATAL_ERROR "check_kit_junit: ctest passed the faulty tests:\n${output}")
 endif()
 well_formed(${WORK}/ctest.xml)
-xpath(${WORK}/ctest.xml "count(/testsuite/testcase)" "4")
-xpath(${WORK}/ctest.xml "string(/testsuite/@failures)" "2")
+xpath(${WORK}/ctest.xml "count(/testsuite/testcase)" "5")
+xpath(${WORK}/ctest.xml "string(/testsuite/@failures)" "3")
 xpath(${WORK}/ctest.xml "string(//testcase[@name='DIV_PRG.divides by zero']/@status)" "fail")
 xpath(${WORK}/ctest.xml "count(//testcase[@name='DIV_PRG.divides by zero']/system-out[contains(., '${fault_text}')])" "1")
 xpath(${WORK}/ctest.xml "string(//testcase[@name='DIV_PRG.prints a WORD as ST does']/@status)" "fail")
 xpath(${WORK}/ctest.xml "count(//testcase[@name='DIV_PRG.prints a WORD as ST does']/system-out[contains(., 'CHECK( 16#00FF == 254 )')])" "1")
+xpath(${WORK}/ctest.xml "string(//testcase[@name='DIV_PRG.prints ARRAYs as ST does']/@status)" "fail")
+xpath(${WORK}/ctest.xml "count(//testcase[@name='DIV_PRG.prints ARRAYs as ST does']/system-out[contains(., 'CHECK( [1, 2, 4] == [1, 2, 3] )')])" "1")
 xpath(${WORK}/ctest.xml "string(//testcase[@name='DIV_PRG.runs before']/@status)" "run")
 xpath(${WORK}/ctest.xml "string(//testcase[@name='DIV_PRG.runs after']/@status)" "run")
-message(STATUS "check_kit_junit: both reports name the four cases, the fault and the failed check")
+message(STATUS "check_kit_junit: both reports name the five cases, the fault and the failed checks")

@@ -67,6 +67,19 @@ struct PlcTest : testing::plc<make_plc> {
 
 enum class E_State : std::int16_t { Idle, Run, Fault };
 
+// TYPE ST_Range : STRUCT iLow : INT; tHold : TIME; END_STRUCT END_TYPE (with = for ARRAYs of it)
+struct ST_Range {
+  INT iLow;
+  TIME tHold;
+  bool operator==(const ST_Range&) const = default;
+};
+
+// A block with an ARRAY variable.
+struct FB_Sort : function_block<FB_Sort> {
+  var<ARRAY<INT, 1, 3>> aiValues;
+  void body() {}
+};
+
 template <class T>
 std::string printed(const T& value) {
   return doctest::StringMaker<T>::convert(value).c_str();
@@ -618,6 +631,19 @@ TEST_SUITE("values") {
     CHECK(std::string(doctest::toString(fb.eState).c_str()) == "Fault");
   }
 
+  TEST_CASE("a failed check prints an ARRAY as ST writes its initial value") {
+    CHECK(printed(ARRAY<INT, 1, 3>{1, 2, 3}) == "[1, 2, 3]");
+    CHECK(printed(ARRAY<WORD, 0, 1>{WORD(255)}) == "[16#00FF, 16#0000]");  // elements as in any failed check
+    CHECK(printed(ARRAY<STRING<10>, 1, 2>{STRING<10>("it's")}) == "['it$'s', '']");
+    CHECK(printed(ARRAY<E_State, 1, 2>{E_State::Run}) == "[Run, Idle]");
+    CHECK(printed(ARRAY<BOOL, 1, 2, 1, 2>{TRUE, FALSE, FALSE, TRUE}) == "[TRUE, FALSE, FALSE, TRUE]");  // row by row
+    CHECK(printed(ARRAY<ARRAY<INT, 1, 2>, 1, 2>{ARRAY<INT, 1, 2>{1, 2}, ARRAY<INT, 1, 2>{3, 4}}) == "[[1, 2], [3, 4]]");
+    CHECK(printed(ARRAY<ST_Range, 1, 2>{ST_Range{INT(1), "T#2s"_iec}}) ==
+          "[(iLow := 1, tHold := T#2s), (iLow := 0, tHold := T#0ms)]");
+    FB_Sort fb;
+    fb.aiValues[2] = 5;
+    CHECK(printed(fb.aiValues) == "[0, 5, 0]");  // a block's ARRAY variable
+  }
 }
 
 TEST_SUITE("forcing") {
