@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // iecoop/detail/duration_argument.hpp — the duration a function that runs simulated time takes
 // (the test kit's advance(), run_until()'s timeout, testing::cycles' cycle time; an
-// application's run_for()): a TIME, an LTIME, a variable of one or a std::chrono duration,
-// never a bare number. ST has no step from a number to a TIME, and `advance(3000)` would
-// otherwise be LTIME's 3000 ns, not the 3 s its writer meant.
+// application's run_for(); cycle_clock::advance()): a TIME, an LTIME, a variable of one or a
+// std::chrono duration, never a bare number. ST has no step from a number to a TIME, and
+// `advance(3000)` would otherwise be LTIME's 3000 ns, not the 3 s its writer meant.
 // IWYU pragma: private, include <iecoop/iecoop.hpp>
 #pragma once
 
