@@ -37,6 +37,7 @@
 #include <string_view>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/io/driver.hpp>
@@ -198,10 +199,11 @@ class application {
 
   /// Runs every task that is due in [now(), now() + duration), in priority order, and
   /// leaves now() at the end of that span. Time passes also while the tasks do not run.
-  void run_for(LTIME duration) { scheduler_.run_for(duration); }
+  /// A duration is TIME, LTIME or std::chrono: `run_for(3000)` does not compile (3000 what?).
+  void run_for(detail::duration_argument duration) { scheduler_.run_for(duration); }
 
-  /// Runs every task that is due before `until` (see run_for).
-  void run_until(LTIME until) { scheduler_.run_until(until); }
+  /// Runs every task that is due before `until` (see run_for), a time since the start.
+  void run_until(detail::duration_argument until) { scheduler_.run_until(until); }
 
   /// Runs `n` base cycles: n times the shortest cyclic interval (1 ms without cyclic tasks).
   void run_cycles(std::uint64_t n) { run_for(base_cycle() * n); }

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/runtime/task_info.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
@@ -47,7 +48,8 @@ class cycles : public driver<cycles<Body>> {
  public:
   /// Runs `body` once per `cycle_time`, the first cycle at `start` (the cycle clock's time).
   template <class B>
-  explicit cycles(B&& body, LTIME cycle_time = LTIME(TIME(10)), LTIME start = LTIME{})
+  explicit cycles(B&& body, iecoop::detail::duration_argument cycle_time = LTIME(TIME(10)),
+                  iecoop::detail::duration_argument start = LTIME{})
       : body_(std::forward<B>(body)), cycle_time_(cycle_time), now_(start) {}
 
   /// The time of the next cycle.
@@ -57,9 +59,9 @@ class cycles : public driver<cycles<Body>> {
   [[nodiscard]] LTIME cycle_time() const noexcept { return cycle_time_; }
   [[nodiscard]] LTIME step_time() const noexcept { return cycle_time_; }
   /// Changes the cycle time from the next cycle on.
-  void set_cycle_time(LTIME cycle_time) noexcept { cycle_time_ = cycle_time; }
+  void set_cycle_time(iecoop::detail::duration_argument cycle_time) noexcept { cycle_time_ = cycle_time; }
   /// Sets the time of the next cycle (a replay table's time_ms); time may also jump back.
-  void set_now(LTIME now) noexcept { now_ = now; }
+  void set_now(iecoop::detail::duration_argument now) noexcept { now_ = now; }
 
   /// n cycles (the drivers' step() and friends call this).
   void run_cycles(std::uint64_t n) {
@@ -101,9 +103,9 @@ class cycles : public driver<cycles<Body>> {
 template <class B>
 cycles(B&&) -> cycles<B>;
 template <class B>
-cycles(B&&, LTIME) -> cycles<B>;
+cycles(B&&, iecoop::detail::duration_argument) -> cycles<B>;
 template <class B>
-cycles(B&&, LTIME, LTIME) -> cycles<B>;
+cycles(B&&, iecoop::detail::duration_argument, iecoop::detail::duration_argument) -> cycles<B>;
 
 }  // namespace iecoop::testing
 

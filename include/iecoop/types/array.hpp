@@ -246,6 +246,34 @@ struct array_initialiser {
   }
 };
 
+/// Whether two ARRAY shapes have the same bounds, dimension by dimension (whatever the C++
+/// types of the bound constants).
+template <class A, class B>
+constexpr bool same_bounds() noexcept {
+  if constexpr (A::rank != B::rank) {
+    return false;
+  } else {
+    for (std::size_t d = 0; d < A::rank; ++d) {
+      if (A::lower(d) != B::lower(d) || A::upper(d) != B::upper(d)) return false;
+    }
+    return true;
+  }
+}
+
+/// An ARRAY's elements compare with `=`: IEC values, enumerations, ARRAYs of them, STRUCTs with
+/// an operator== of their own.
+template <class T>
+concept comparable_element = requires(const T& x) { static_cast<bool>(x == x); };
+
+/// The elements of two ARRAYs of one shape, in memory order: TRUE if all are equal.
+template <class T>
+constexpr bool equal_elements(const T* a, const T* b, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!static_cast<bool>(a[i] == b[i])) return false;
+  }
+  return true;
+}
+
 }  // namespace detail
 
 /// ST's repetition `N(value)` inside an ARRAY's initial values: `repeat<3>(0)` for `3(0)`.
@@ -348,6 +376,63 @@ struct basic_array {
   [[nodiscard]] constexpr T* end() noexcept { return data() + element_count; }
   [[nodiscard]] constexpr const T* begin() const noexcept { return data(); }
   [[nodiscard]] constexpr const T* end() const noexcept { return data() + element_count; }
+
+  // Each check is in the operator itself, so that the caller's line comes early in the
+  // compiler's report (every function between adds a note).
+
+  /// `a = b` as the test libraries of ST compare ARRAYs (TcUnit's AssertArrayEquals): TRUE if
+  /// each element equals the one at the same index. Only ARRAYs of one element type and the
+  /// same bounds compare; the elements compare with their own `=`.
+  [[nodiscard]] friend constexpr BOOL operator==(const basic_array& a, const basic_array& b) {
+    static_assert(detail::comparable_element<T>,
+                  "iecoop: ARRAYs compare element by element, and these elements have no = (a function block, or a "
+                  "STRUCT without operator==); compare the members you mean, or give the STRUCT "
+                  "`bool operator==(const ST_X&) const = default;`");
+    if constexpr (detail::comparable_element<T>) {
+      return BOOL(detail::equal_elements(a.data(), b.data(), element_count));
+    } else {
+      return FALSE;
+    }
+  }
+  [[nodiscard]] friend constexpr BOOL operator!=(const basic_array& a, const basic_array& b) {
+    static_assert(detail::comparable_element<T>,
+                  "iecoop: ARRAYs compare element by element, and these elements have no = (a function block, or a "
+                  "STRUCT without operator==); compare the members you mean, or give the STRUCT "
+                  "`bool operator==(const ST_X&) const = default;`");
+    if constexpr (detail::comparable_element<T>) {
+      return BOOL(!detail::equal_elements(a.data(), b.data(), element_count));
+    } else {
+      return TRUE;
+    }
+  }
+  /// An ARRAY of other bounds or another element type: refused, as ST would not compare them.
+  /// One that differs only in its index check compares as one of this type (yielding a C++
+  /// bool, so that C++ rewrites `a != b` as `!(a == b)` with this one function).
+  template <array_check C, class U, auto... B>
+    requires(!std::is_same_v<basic_array<C, U, B...>, basic_array>)
+  [[nodiscard]] friend constexpr bool operator==(const basic_array& a, const basic_array<C, U, B...>& b) {
+    if constexpr (!std::is_same_v<U, T>) {
+      static_assert(detail::dependent_false<U>,
+                    "iecoop: an ARRAY compares only with an ARRAY of the same element type (ST assigns no ARRAY OF INT "
+                    "to an ARRAY OF DINT either); declare both with one element type");
+      return false;
+    } else if constexpr (!detail::same_bounds<shape, detail::array_shape<B...>>()) {
+      static_assert(detail::dependent_false<U>,
+                    "iecoop: an ARRAY compares only with an ARRAY of the same bounds, index by index; declare the "
+                    "other with these bounds (ARRAY<INT, 1, 3> for ARRAY[1..3] OF INT), or compare in a FOR loop");
+      return false;
+    } else {
+      static_assert(detail::comparable_element<T>,
+                    "iecoop: ARRAYs compare element by element, and these elements have no = (a function block, or a "
+                    "STRUCT without operator==); compare the members you mean, or give the STRUCT "
+                    "`bool operator==(const ST_X&) const = default;`");
+      if constexpr (detail::comparable_element<T>) {
+        return detail::equal_elements(a.data(), b.data(), element_count);
+      } else {
+        return false;
+      }
+    }
+  }
 
   // Public only to make the ARRAY an aggregate; each element starts at its type's initial value.
   detail::array_elements<T, element_count> elements_{};
