@@ -42,6 +42,7 @@ modbus_server_config server_config(std::uint16_t words) {
   config.bind_address = "127.0.0.1";
   config.port = 0;
   config.holding_registers = words;
+  config.holding_image = "%IW0";
   config.input_registers = words;
   return config;
 }

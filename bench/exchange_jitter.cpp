@@ -104,6 +104,7 @@ int main(int argc, char** argv) {
   config.bind_address = "127.0.0.1";
   config.port = 0;
   config.holding_registers = static_cast<std::uint16_t>(words);
+  config.holding_image = "%IW0";
   config.input_registers = static_cast<std::uint16_t>(words);
   config.max_clients = clients + 1;
   modbus_server<image> server{config};

@@ -310,7 +310,7 @@ namespace sim {
 using namespace iecoop;
 using demo::E_Motor;
 
-inline simulated_io<> field;           // the PLC's terminals, as the field sees them
+inline simulated_io<> field{window_of<"%IB0", 4>};  // the PLC's terminals, %IB0..%IB3, as the field sees them
 inline E_Motor fitted = E_Motor::VFD;  // the drive actually wired to the belt
 
 // What happened in this millisecond, for the trace ("operator: START, motor on").
@@ -330,8 +330,8 @@ struct BELT_SIM : program<BELT_SIM> {
   static constexpr double box_at = eye_at + 0.10;
 
   struct part {
-    double front;  // m from the infeed
-    bool stuck;
+    double front = 0.0;  // m from the infeed
+    bool stuck = false;
   };
   // The parts on the belt, the one nearest the eye first: parts[0] to parts[count - 1]. In
   // the program's own memory, as a PLC would keep them: the instances are built at start()
@@ -405,9 +405,9 @@ struct BELT_SIM : program<BELT_SIM> {
 enum class act : std::uint8_t { speed, start, stop, reset, jam, clear };
 struct step {
   TIME at;
-  act what;
+  act what = act::speed;
   INT value;
-  const char* text;
+  const char* text = "";
 };
 
 inline std::span<const step> script() {

@@ -298,7 +298,8 @@ int run(const options& opt) {
   }
 #if IECOOP_DEMO_MODBUS
   // --modbus: the conveyor's outputs served to any Modbus client, beside the simulated field
-  // (CODESYS: a Modbus TCP Slave Device with 8 holding and 4 input registers).
+  // (CODESYS: a Modbus TCP Slave Device with 8 holding and 4 input registers). Its holding
+  // registers lie after the terminals (%IB0..%IB3): an io_chain refuses two drivers on one input.
   std::optional<modbus_server<>> hmi;
   std::optional<io_chain<simulated_io<>, modbus_server<>>> io;
   if (opt.modbus_port >= 0) {

@@ -24,6 +24,8 @@ cd "$(dirname "$0")/.."
 started=$(date +%s)
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ clang doctest-dev libfmt-dev libbenchmark-dev
+# valgrind's memcheck runs the initial-values program in the g++ build (tests initial_values.*).
+iecoop_require_packages valgrind
 # iecoop-check (docs/iecoop-check.md) is built on libclang's C API: its headers come with
 # libclang-14-dev (23 MB to download; clang above already brings the library).
 iecoop_require_packages libclang-14-dev
@@ -100,13 +102,17 @@ firmware() {
 # The data exchange's tests against real peers (label exchange) run in the clang build (ASan and
 # UBSan) and again under ThreadSanitizer (the exchange-tsan stage below), not in the g++ build,
 # which compiles the exchange's headers in its header checks and its benchmarks.
+# valgrind's memcheck runs in the g++ build (IECOOP_VALGRIND_TESTS=ON: the initial-values
+# program, tests initial_values.memcheck*): valgrind does not run the clang build's sanitized
+# programs.
 # The clang build runs the unit tests in 6 slices, each one process (IECOOP_UNIT_TEST_SHARDS):
 # a sanitized process start costs more than most test cases; the g++ build runs each case alone.
 run clang-sanitize clang++ "-LE ^check$" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1 -DNDEBUG" \
   "-DIECOOP_SANITIZE=address;undefined" -DIECOOP_CHECK_EXAMPLES=OFF -DIECOOP_BUILD_FUZZ=ON -DIECOOP_FUZZ_SECONDS=5 \
   -DIECOOP_BUILD_BENCH=OFF -DIECOOP_HEADER_CHECKS=OFF -DIECOOP_CONSUMER_TESTS=OFF -DIECOOP_UNIT_TEST_SHARDS=6 \
   -DIECOOP_EXCHANGE_TESTS=ON
-run gcc-release g++ "-E ^compile_fail\\..*\\.twin$" -DCMAKE_BUILD_TYPE=Release -DIECOOP_EXCHANGE_TESTS=OFF
+run gcc-release g++ "-E ^compile_fail\\..*\\.twin$" -DCMAKE_BUILD_TYPE=Release -DIECOOP_EXCHANGE_TESTS=OFF \
+  -DIECOOP_VALGRIND_TESTS=ON
 # The data exchange under ThreadSanitizer: its network threads and the task cycles meet through
 # lock-free buffers, which AddressSanitizer does not check. Only what its tests need is built
 # (the tests, the MQTT child, the demo); libmosquitto's own mutexes take turns in an order TSan

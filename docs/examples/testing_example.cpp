@@ -141,6 +141,22 @@ TEST_SUITE("FILL_PRG") {
   }
 }
 
+TEST_SUITE("FB_FillValve") {
+  TEST_CASE("durations are written with their unit") {
+    using namespace std::chrono_literals;
+    FB_FillValve fbValve;
+    fbValve.tTimeout = "T#3s"_iec;
+    testing::cycles run{fbValve, 10ms};  // the cycle time: "T#10ms"_iec, or 10ms
+    fbValve.bStart = TRUE;
+    run.advance("T#1s"_iec);
+    run.advance(1s);  // the same
+    CHECK_FALSE(fbValve.bTimeout);
+    run.advance(fbValve.tTimeout);  // a TIME variable: three seconds more
+    CHECK(fbValve.bTimeout);
+    // run.advance(3000);           // does not compile: 3000 what?
+  }
+}
+
 TEST_SUITE("FILL_PRG") {
   TEST_CASE_FIXTURE(FillerTest, "a forced output keeps the valve shut in the field") {
     force(gvl.qxValve, FALSE);   // %QX0.0

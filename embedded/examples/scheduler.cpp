@@ -8,7 +8,8 @@
 //
 // The field is simulated by the I/O driver: an operator presses START at 20 ms and 700 ms and
 // STOP at 520 ms and 900 ms. After one second of machine time main() prints what the field
-// saw and the task statistics, and checks them.
+// saw, what a block that all three programs call saw of its tasks (task information, read as
+// a block ported from TwinCAT reads it) and the task statistics, and checks them.
 //
 // Every tick (1 ms) the main loop runs the application for one millisecond; the SysTick
 // interrupt only counts ticks (embedded/tick.hpp). The application has static storage and a
@@ -61,6 +62,26 @@ struct FB_StarDelta : function_block<FB_StarDelta, implements<I_Motor>> {
   BOOL bRunning_Get() override { return bDelta; }  // bRunning := bDelta;
 };
 
+// FUNCTION_BLOCK FB_TaskProbe: notes, per task, what the task that calls it tells it
+struct FB_TaskProbe : function_block<FB_TaskProbe> {
+  // VAR_OUTPUT
+  ARRAY<STRING<15>, 1, 3> asTask;  // asTask : ARRAY[1..3] OF STRING(15);   (by task index)
+  ARRAY<TIME, 1, 3> atInterval;    // atInterval : ARRAY[1..3] OF TIME;
+  ARRAY<UDINT, 1, 3> audiCycles;   // audiCycles : ARRAY[1..3] OF UDINT;
+  // END_VAR
+
+  void body() {
+    const DINT i = GETCURTASKINDEXEX();                      // i := GETCURTASKINDEXEX();
+    const PlcTaskSystemInfo info = F_GetTaskInfo();          // info := _TaskInfo[i];
+    asTask[i] = info.TaskName;                               // asTask[i] := info.TaskName;
+    atInterval[i] = UDINT_TO_TIME(info.CycleTime / 10000U);  // atInterval[i] := UDINT_TO_TIME(info.CycleTime / 10000);
+    audiCycles[i] = info.CycleCount;                         // audiCycles[i] := info.CycleCount;
+  }
+};
+
+// VAR_GLOBAL fbProbe : FB_TaskProbe; END_VAR   (each program calls it: it sees each task in turn)
+FB_TaskProbe fbProbe;
+
 // PROGRAM MOTOR_PRG
 struct MOTOR_PRG : program<MOTOR_PRG> {
   // VAR
@@ -76,6 +97,7 @@ struct MOTOR_PRG : program<MOTOR_PRG> {
   using LOCATED = pins<&MOTOR_PRG::ixStart, &MOTOR_PRG::ixStop, &MOTOR_PRG::qxStar, &MOTOR_PRG::qxDelta>;
 
   void body() {
+    fbProbe();                            // fbProbe();
     ipMotor = fbStarter;                  // ipMotor := fbStarter;
     bRun = (ixStart || bRun) && !ixStop;  // bRun := (ixStart OR bRun) AND NOT ixStop;
     ipMotor->Run(bRun);                   // ipMotor.Run(bRun);
@@ -93,11 +115,15 @@ struct STATS_PRG : program<STATS_PRG> {
   // END_VAR
 
   void body() {
+    fbProbe();  // fbProbe();
     const BOOL bRunning = MOTOR_PRG::instance().bRunning;
     ctStarts("CU"_ = bRunning, "RESET"_ = FALSE, "PV"_ = WORD(100));  // ctStarts(CU := MOTOR_PRG.bRunning, PV := 100);
-    if (bRunning) {                                                   // IF MOTOR_PRG.bRunning THEN
-      tRunning = tRunning + "T#10ms"_iec;                             //     tRunning := tRunning + T#10ms;
-    }                                                                 // END_IF
+    // IF MOTOR_PRG.bRunning THEN      (the task's interval: TwinCAT's CycleTime is in 100 ns)
+    //     tRunning := tRunning + UDINT_TO_TIME(_TaskInfo[GETCURTASKINDEXEX()].CycleTime / 10000);
+    // END_IF
+    if (bRunning) {
+      tRunning = tRunning + UDINT_TO_TIME(F_GetTaskInfo().CycleTime / 10000U);
+    }
   }
 };
 
@@ -111,6 +137,7 @@ struct LAMP_PRG : program<LAMP_PRG> {
   using LOCATED = pins<&LAMP_PRG::qxLamp>;
 
   void body() {
+    fbProbe();                                              // fbProbe();
     bToggle = !bToggle;                                     // bToggle := NOT bToggle;
     tpBlink("IN"_ = bToggle, "PT"_ = "T#50ms"_iec);         // tpBlink(IN := bToggle, PT := T#50ms);
     qxLamp = tpBlink.Q && !MOTOR_PRG::instance().bRunning;  // qxLamp := tpBlink.Q AND NOT MOTOR_PRG.bRunning;
@@ -157,6 +184,16 @@ void print_task(const task_state& t) {
   firmware::print_line("task ", t.name(), ": ", s.cycles, " cycles, ", s.overruns, " overruns");
 }
 
+// What fbProbe saw of task i (TwinCAT's index, from 1).
+void print_probe(DINT i) {
+  const TIME interval = fbProbe.atInterval[i];
+  firmware::print_line("fbProbe in task ", i, ": ", fbProbe.asTask[i].c_str(), ", every ", interval, ", cycle ",
+                       fbProbe.audiCycles[i]);
+}
+bool probe_saw(DINT i, const char* name, TIME interval, UDINT cycles) {
+  return fbProbe.asTask[i] == name && fbProbe.atInterval[i] == interval && fbProbe.audiCycles[i] == cycles;
+}
+
 }  // namespace
 
 #if defined(__arm__)
@@ -190,6 +227,7 @@ int main() {
                        " ms, lamp last on at ", field.lamp_on_ms, " ms");
   firmware::print_line("pump: ", field.delta_starts, " starts seen by the field, CTU counted ", starts, ", ran ",
                        running);
+  for (DINT i = 1; i <= 3; i = i + 1) print_probe(i);
   for (const task_state& t : plc.tasks()) print_task(t);
   // Each start: the latch at the button's first cycle (20 ms, 700 ms), star for T#50ms, then
   // delta until the cycle that reads STOP (520 ms, 900 ms). Slow samples the motor every 10 ms
@@ -199,7 +237,9 @@ int main() {
   const bool ok = field.star_on_ms == 749 && field.delta_on_ms == 899 && field.lamp_on_ms == 700 &&
                   field.delta_starts == 2 && starts == 2 && running == "T#600ms"_iec &&
                   plc.task("Fast").statistics().cycles == 1000 && plc.task("Slow").statistics().cycles == 100 &&
-                  plc.task("Blink").statistics().cycles == 10;
+                  plc.task("Blink").statistics().cycles == 10 && probe_saw(1, "Fast", "T#1ms"_iec, 1000U) &&
+                  probe_saw(2, "Slow", "T#10ms"_iec, 100U) && probe_saw(3, "Blink", "T#100ms"_iec, 10U) &&
+                  GETCURTASKINDEXEX() == 0;  // outside a task cycle
   plc.stop();
   firmware::print_line("RESULT scheduler ", ok ? "PASS" : "FAIL");
   return ok ? firmware::exit_status::passed : firmware::exit_status::failed;

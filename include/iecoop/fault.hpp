@@ -40,7 +40,8 @@ enum class fault_kind : std::uint8_t {
                          ///< of a derived block does not call run_fb_init / run_fb_exit)
 };
 
-/// A fault as the handler sees it. `message` points to a string literal; `task` and `pou`
+/// A fault as the handler sees it. `message` points to a string literal (or to text that lives
+/// as long as the object that reported it: an io_chain's configuration error); `task` and `pou`
 /// name the task whose cycle was running and the program it was calling when the fault
 /// happened (nullptr outside a task cycle, and for a fault of the task itself, such as a
 /// watchdog, `pou`). Both are set by the application's scheduler (fault_context).

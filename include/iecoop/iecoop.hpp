@@ -74,6 +74,7 @@
 #include <iecoop/runtime/retain_storage.hpp>
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/runtime/task.hpp>
+#include <iecoop/runtime/task_info.hpp>
 
 // trace/: the trace recorder and its VCD, CSV and SVG writers (CODESYS Trace)
 #include <iecoop/trace.hpp>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // iecoop/ostream.hpp — operator<< for IEC values, printing them as ST writes them (TIME as
 // T#1s500ms, DATE as D#2026-11-23, BOOL as TRUE/FALSE, WSTRING in UTF-8, an enumeration's
-// component by its name). Optional: the core never needs <ostream>; include this for
-// iostreams, or for readable values in failed test assertions.
+// component by its name, an ARRAY as [1, 2, 3]). Optional: the core never needs <ostream>;
+// include this for iostreams, or for readable values in failed test assertions.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +12,7 @@
 #include <iecoop/detail/utf8.hpp>
 #include <iecoop/pou/property.hpp>
 #include <iecoop/pou/variables.hpp>
+#include <iecoop/types/array.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -117,6 +118,19 @@ template <Property P>
   requires requires(const P& p) { p.get(); }
 std::ostream& operator<<(std::ostream& os, const P& p) {
   return os << p.get();
+}
+
+/// An ARRAY prints as ST writes its initial value, `[1, 2, 3]`: row by row when it has more
+/// than one dimension, nested for an ARRAY OF ARRAY; its elements as they print.
+template <array_check Check, class T, auto... Bounds>
+  requires requires(std::ostream& os, const T& element) { os << element; }
+std::ostream& operator<<(std::ostream& os, const basic_array<Check, T, Bounds...>& value) {
+  os << '[';
+  for (const T& element : value) {
+    if (&element != value.begin()) os << ", ";
+    os << element;
+  }
+  return os << ']';
 }
 
 }  // namespace iecoop

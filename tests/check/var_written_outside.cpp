@@ -9,7 +9,7 @@ using namespace iecoop;
 struct ST_Pos {
   INT x;
   INT y;
-  int raw;
+  int raw = 0;
 };
 
 // FUNCTION_BLOCK FB_Axis

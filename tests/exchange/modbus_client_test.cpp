@@ -273,6 +273,14 @@ TEST_CASE("modbus_client: channels that do not fit are refused by start(), namin
     return std::string(error == nullptr ? "" : error);
   };
   CHECK(start_with([](modbus_device_config&) {}).empty());
+  // No default place in the image: each channel's must be given.
+  CHECK(modbus_channel{}.image.empty());
+  CHECK(start_with([](modbus_device_config& d) {
+          d.reads[1].image.clear();
+        }).find("read channel's image is not given") != std::string::npos);
+  CHECK(start_with([](modbus_device_config& d) {
+          d.writes[1].image.clear();
+        }).find("write channel's image is not given") != std::string::npos);
   CHECK(start_with([](modbus_device_config& d) { d.writes[0].image = "%IW4"; }).find("%Q address") !=
         std::string::npos);
   CHECK(start_with([](modbus_device_config& d) { d.reads[0].image = "%QW4"; }).find("%I address") != std::string::npos);
@@ -291,6 +299,20 @@ TEST_CASE("modbus_client: channels that do not fit are refused by start(), namin
   const std::string host = start_with([](modbus_device_config& d) { d.host = "coupler.local"; });
   CHECK(host.find("IPv4") != std::string::npos);
   CHECK(host.find("(device Coupler1)") != std::string::npos);
+  // Beside another driver in an io_chain: the read channels are its input footprint, the write
+  // channels its output footprint.
+  modbus_client<client_image> one{{coupler(502)}};
+  REQUIRE(one.input_footprint().size() == 3);
+  CHECK(one.input_footprint()[1] == window_of<"%IX8.0", 8, client_image>);
+  CHECK(one.output_footprint()[0] == window_of<"%QW0", 2, client_image>);
+  simulated_io<client_image> card{window_of<"%IB8", 1, client_image>};  // the card's %IB8: the coupler's bits
+  io_chain io{card, one};
+  CHECK(std::string(io.configuration_error()) ==
+        "iecoop: io_chain: drivers 1 (simulated_io) and 2 (modbus_client) both write %IB8; give each driver its own "
+        "input area");
+  simulated_io<client_image> other_card{window_of<"%IB9", 1, client_image>};
+  io_chain fine{other_card, one};
+  CHECK(fine.configuration_error() == nullptr);
   // Two devices reading into the same bits.
   modbus_client<client_image> two{{coupler(502), coupler(503)}};
   const char* error = two.start();

@@ -10,12 +10,14 @@
 #include <cstdint>
 #include <regex>
 #include <set>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include <iecoop/exchange/modbus_server.hpp>
 #include <iecoop/iecoop.hpp>
+#include <iecoop/testing.hpp>
 
 #include "peer.hpp"
 #include "running.hpp"
@@ -126,6 +128,7 @@ modbus_server_config config_on_free_port() {
   config.bind_address = "127.0.0.1";
   config.port = 0;
   config.holding_registers = 8;
+  config.holding_image = "%IW0";
   config.input_registers = 8;
   return config;
 }
@@ -173,6 +176,59 @@ TEST_CASE(
   CHECK(s.requests == 4);
   CHECK(s.exceptions == 0);
   CHECK(s.connections == 4);
+}
+
+// The station's own I/O card: four push-buttons and selector switches in %IB0..%IB3, read every
+// cycle (here: 16#05 in %IB0, 16#A5 in %IB3), as a local driver beside the Modbus server.
+struct local_card {
+  static constexpr std::array<image_window, 1> input_footprint() { return {window_of<"%IB0", 4, server_image>}; }
+  void read_inputs(std::span<std::byte> in) noexcept {
+    in[0] = std::byte{0x05};
+    in[1] = std::byte{0};
+    in[2] = std::byte{0};
+    in[3] = std::byte{0xA5};
+  }
+  void write_outputs(std::span<const std::byte>) noexcept {}
+};
+
+TEST_CASE("modbus_server: beside a local card in an io_chain, holding registers on the card's inputs are refused") {
+  server_app plc = make_app();
+  local_card card;
+  SUBCASE("overlapping: start() refuses, naming both drivers and the bytes") {
+    modbus_server_config config = config_on_free_port();
+    config.holding_image = "%IW1";  // %IB2..%IB17: the card's %IB2 and %IB3 too
+    modbus_server<server_image> server{config};
+    REQUIRE(server.start() == nullptr);
+    io_chain io{card, server};
+    const std::string error = io.configuration_error();
+    CHECK(error ==
+          "iecoop: io_chain: drivers 1 (local_card) and 2 (modbus_server) both write %IB2..%IB3; give each driver "
+          "its own input area");
+    plc.connect(io);
+    testing::expect_faults faults;
+    CHECK_FALSE(plc.start());
+    REQUIRE(faults.count() == 1);
+    CHECK(faults.last().kind == fault_kind::invalid_value);
+    CHECK(std::string(faults.last().message) == error);
+    CHECK(plc.state() == application_state::stopped);
+  }
+  SUBCASE("the holding registers after the card's inputs: both reach the program") {
+    modbus_server_config config = config_on_free_port();
+    config.holding_image = "%IW2";  // %IB4..%IB19
+    modbus_server<server_image> server{config};
+    REQUIRE(server.start() == nullptr);
+    io_chain io{card, server};
+    CHECK(io.configuration_error() == nullptr);
+    plc.connect(io);
+    REQUIRE(plc.start());
+    const run_result write = run_while(plc, mbpoll(server.port(), {"-1", "-r", "1", "127.0.0.1", "1234", "4321"}));
+    REQUIRE_MESSAGE(write.exit_code == 0, write.output);
+    plc.run_for("T#2ms"_iec);
+    CHECK(server_image::read<BYTE, "%IB0">() == 0x05);  // the push-buttons, untouched
+    CHECK(server_image::read<BYTE, "%IB3">() == 0xA5);
+    CHECK(server_image::read<INT, "%IW2">() == 1234);  // holding registers 0 and 1
+    CHECK(server_image::read<INT, "%IW3">() == 4321);
+  }
 }
 
 TEST_CASE("modbus_server: coils and discrete inputs address the registers' bits, or bit areas of their own") {
@@ -527,6 +583,15 @@ TEST_CASE("modbus_server: a configuration that does not fit the image is refused
     return std::string(error == nullptr ? "" : error);
   };
   CHECK(start_with([](modbus_server_config&) {}).empty());
+  // No default place in %I: the holding registers' (and the coils') must be given.
+  CHECK(modbus_server_config{}.holding_image.empty());
+  CHECK(start_with([](modbus_server_config& c) { c.holding_image.clear(); }).find("holding_image is not given") !=
+        std::string::npos);
+  CHECK(start_with([](modbus_server_config& c) { c.coils = 4; }).find("coil_image is not given") != std::string::npos);
+  CHECK(start_with([](modbus_server_config& c) {
+          c.coils = 4;
+          c.coil_image = "%IX20.0";
+        }).empty());
   CHECK(start_with([](modbus_server_config& c) { c.holding_image = "%QW0"; }).find("%I address") != std::string::npos);
   CHECK(start_with([](modbus_server_config& c) { c.input_image = "%IW0"; }).find("%Q address") != std::string::npos);
   CHECK(start_with([](modbus_server_config& c) { c.holding_image = "%IX0.0"; }).find("word address") !=

@@ -1,6 +1,8 @@
-// A test program of which two cases fail (a fault in a task, and a failed check), between
-// cases that pass: cmake/check_kit_junit.cmake runs it whole and through CTest, and reads the
-// JUnit XML both write with xmllint. Not registered as tests of its own: it must fail.
+// A test program of which three cases fail (a fault in a task, and two failed checks), between
+// cases that pass, one of them with ';' and an unmatched '[' in its name (which CMake's lists
+// split and group) and characters that XML escapes: cmake/check_kit_junit.cmake runs it whole
+// and through CTest, and reads the JUnit XML both write with xmllint. Not registered as tests of
+// its own: it must fail.
 #include <iecoop/testing.hpp>
 
 using namespace iecoop;
@@ -45,5 +47,14 @@ TEST_SUITE("DIV_PRG") {
   TEST_CASE("prints a WORD as ST does") {
     const WORD wMask = "WORD#16#00FF"_iec;
     CHECK(wMask == 254U);
+  }
+  TEST_CASE_FIXTURE(DivTest, "runs 3 cycles; then reads [GVL.iResult <> 0 & 'ok'") {
+    step(3);
+    CHECK(gvl.iResult == 100);
+  }
+  TEST_CASE("prints ARRAYs as ST does") {
+    const ARRAY<INT, 1, 3> aiExpected{1, 2, 3};
+    const ARRAY<INT, 1, 3> aiResult{1, 2, 4};
+    CHECK(aiResult == aiExpected);
   }
 }

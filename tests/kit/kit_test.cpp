@@ -67,6 +67,19 @@ struct PlcTest : testing::plc<make_plc> {
 
 enum class E_State : std::int16_t { Idle, Run, Fault };
 
+// TYPE ST_Range : STRUCT iLow : INT; tHold : TIME; END_STRUCT END_TYPE (with = for ARRAYs of it)
+struct ST_Range {
+  INT iLow;
+  TIME tHold;
+  bool operator==(const ST_Range&) const = default;
+};
+
+// A block with an ARRAY variable.
+struct FB_Sort : function_block<FB_Sort> {
+  var<ARRAY<INT, 1, 3>> aiValues;
+  void body() {}
+};
+
 template <class T>
 std::string printed(const T& value) {
   return doctest::StringMaker<T>::convert(value).c_str();
@@ -99,6 +112,35 @@ TEST_SUITE("cycles") {
     CHECK(fb.count == 3);
     run.advance(LTIME{});
     CHECK(fb.count == 3);
+  }
+
+  TEST_CASE("durations are given with their unit: TIME, LTIME, a variable of one, std::chrono") {
+    using namespace std::chrono_literals;
+    TON tmr;
+    tmr.PT = "T#300ms"_iec;
+    tmr.IN = TRUE;
+    testing::cycles run{tmr, 100ms};  // std::chrono for the cycle time
+    CHECK(run.cycle_time() == LTIME(TIME(100)));
+    run.advance(tmr.PT);  // a TIME variable: T#300ms, three cycles
+    CHECK(run.cycle() == 3U);
+    CHECK_FALSE(tmr.Q);
+    run.advance(1s);  // ten cycles, not 1 ns's one
+    CHECK(run.cycle() == 13U);
+    CHECK(tmr.Q);
+    run.advance("LTIME#150ms"_iec);  // rounded up to two cycles
+    CHECK(run.cycle() == 15U);
+    run.set_cycle_time(std::chrono::milliseconds(50));
+    run.set_now(2s);
+    run.step();
+    CHECK(cycle_clock::now() == LTIME(TIME(2000)));
+    CHECK(run.now() == LTIME(TIME(2050)));
+    tmr.IN = FALSE;
+    run.step();
+    tmr.IN = TRUE;
+    const testing::wait_result r = run.run_until(tmr.Q, 500ms);  // std::chrono for the timeout
+    REQUIRE(r);
+    CHECK(r.timeout == LTIME(TIME(500)));
+    CHECK(r.waited == LTIME(TIME(350)));  // the edge's cycle, then T#300ms: 7 cycles of T#50ms
   }
 
   TEST_CASE("a lambda is called as it is, with its arguments") {
@@ -268,6 +310,17 @@ TEST_SUITE("plc") {
     const testing::wait_result r = run_until(io.qxLamp, "T#1s"_iec);
     REQUIRE(r);
     CHECK(r.cycles == 6U);
+  }
+
+  TEST_CASE_FIXTURE(PlcTest, "the application runs for a duration with its unit") {
+    using namespace std::chrono_literals;
+    app().run_for(90ms);
+    CHECK(task("Fast").statistics().cycles == 9U);
+    CHECK(task("Slow").statistics().cycles == 3U);
+    app().run_until("T#150ms"_iec);  // a time since the start
+    CHECK(now() == LTIME(TIME(150)));
+    advance(std::chrono::milliseconds(50));
+    CHECK(now() == LTIME(TIME(200)));
   }
 
   TEST_CASE("a fixture's application starts with it and stops after it") {
@@ -576,6 +629,20 @@ TEST_SUITE("values") {
     CHECK(std::string(text.c_str()) == "Idle");
     FB_State fb;
     CHECK(std::string(doctest::toString(fb.eState).c_str()) == "Fault");
+  }
+
+  TEST_CASE("a failed check prints an ARRAY as ST writes its initial value") {
+    CHECK(printed(ARRAY<INT, 1, 3>{1, 2, 3}) == "[1, 2, 3]");
+    CHECK(printed(ARRAY<WORD, 0, 1>{WORD(255)}) == "[16#00FF, 16#0000]");  // elements as in any failed check
+    CHECK(printed(ARRAY<STRING<10>, 1, 2>{STRING<10>("it's")}) == "['it$'s', '']");
+    CHECK(printed(ARRAY<E_State, 1, 2>{E_State::Run}) == "[Run, Idle]");
+    CHECK(printed(ARRAY<BOOL, 1, 2, 1, 2>{TRUE, FALSE, FALSE, TRUE}) == "[TRUE, FALSE, FALSE, TRUE]");  // row by row
+    CHECK(printed(ARRAY<ARRAY<INT, 1, 2>, 1, 2>{ARRAY<INT, 1, 2>{1, 2}, ARRAY<INT, 1, 2>{3, 4}}) == "[[1, 2], [3, 4]]");
+    CHECK(printed(ARRAY<ST_Range, 1, 2>{ST_Range{INT(1), "T#2s"_iec}}) ==
+          "[(iLow := 1, tHold := T#2s), (iLow := 0, tHold := T#0ms)]");
+    FB_Sort fb;
+    fb.aiValues[2] = 5;
+    CHECK(printed(fb.aiValues) == "[0, 5, 0]");  // a block's ARRAY variable
   }
 }
 

@@ -1,5 +1,5 @@
 // ARRAY with IEC bounds: layout, indexing, initial values, LOWER_BOUND/UPPER_BOUND, ARRAY[*]
-// in-outs, ARRAY OF blocks, and CheckBounds' fault path.
+// in-outs, ARRAY OF blocks, comparing ARRAYs, and CheckBounds' fault path.
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -56,6 +56,13 @@ struct FB_Buffer : function_block<FB_Buffer> {
     aPairs(iNext % 2, 1) = iIn;
     iNext = iNext % 4 + 1;
   }
+};
+
+// A STRUCT with `=` of its own: ARRAYs of it compare element by element.
+struct ST_Point {
+  INT x;
+  REAL y;
+  bool operator==(const ST_Point&) const = default;
 };
 
 // Whether reading a[I] of an ARRAY[1..3] is a constant expression: the fault is not.
@@ -233,6 +240,75 @@ TEST_SUITE("ARRAY") {
     b = a;
     a[1] = 7;
     CHECK(b[1] == 1);
+  }
+
+  TEST_CASE("ARRAYs of one type compare element by element, as TcUnit's AssertArrayEquals") {
+    const ARRAY<INT, 1, 3> aiExpected{1, 2, 3};
+    ARRAY<INT, 1, 3> aiResult{1, 2, 3};
+    CHECK(aiResult == aiExpected);
+    CHECK_FALSE(aiResult != aiExpected);
+    static_assert(std::is_same_v<decltype(aiResult == aiExpected), BOOL>);  // ST's comparisons yield BOOL
+    static_assert(std::is_same_v<decltype(aiResult != aiExpected), BOOL>);
+    for (DINT i = 1; i <= 3; i = i + 1) {  // each element counts, the first and the last too
+      aiResult[i] = aiResult[i] + 1;
+      CHECK(aiResult != aiExpected);
+      CHECK_FALSE(aiResult == aiExpected);
+      aiResult[i] = aiResult[i] - 1;
+      CHECK(aiResult == aiExpected);
+    }
+    static_assert(ARRAY<INT, 1, 3>{1, 2, 3} == ARRAY<INT, 1, 3>{1, 2, 3});  // a constant expression
+    static_assert(ARRAY<INT, 1, 3>{1, 2, 3} != ARRAY<INT, 1, 3>{1, 2});
+  }
+
+  TEST_CASE("multi-dimensional ARRAYs and ARRAYs OF ARRAY compare every element") {
+    ARRAY<REAL, 1, 2, 0, 2> arA{1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f};
+    ARRAY<REAL, 1, 2, 0, 2> arB = arA;
+    CHECK(arA == arB);
+    arB(2, 2) = 6.5f;
+    CHECK(arA != arB);
+    ARRAY<ARRAY<INT, 1, 2>, 1, 2> aaA{ARRAY<INT, 1, 2>{1, 2}, ARRAY<INT, 1, 2>{3, 4}};
+    ARRAY<ARRAY<INT, 1, 2>, 1, 2> aaB = aaA;
+    CHECK(aaA == aaB);
+    aaB[2][1] = 0;
+    CHECK(aaA != aaB);
+  }
+
+  TEST_CASE("ARRAYs of STRING, enumerations, TIME and STRUCTs with = compare") {
+    ARRAY<STRING<10>, 1, 2> asA{STRING<10>("on"), STRING<10>("off")};
+    ARRAY<STRING<10>, 1, 2> asB = asA;
+    CHECK(asA == asB);
+    asB[2] = STRING<10>("of");
+    CHECK(asA != asB);
+    ARRAY<E_Axis, 1, 2> aeA{X, Y};
+    CHECK(aeA == ARRAY<E_Axis, 1, 2>{X, Y});
+    CHECK(aeA != ARRAY<E_Axis, 1, 2>{X, Z});
+    ARRAY<TIME, 0, 1> atA{"T#1s"_iec, "T#2s"_iec};
+    CHECK(atA == ARRAY<TIME, 0, 1>{"T#1s"_iec, "T#2s"_iec});
+    CHECK(atA != ARRAY<TIME, 0, 1>{"T#1s"_iec, "T#2s1ms"_iec});
+    ARRAY<ST_Point, 1, 2> apA{ST_Point{1, 0.5f}, ST_Point{2, 1.5f}};
+    ARRAY<ST_Point, 1, 2> apB = apA;
+    CHECK(apA == apB);
+    apB[2].y = 1.25f;
+    CHECK(apA != apB);
+  }
+
+  TEST_CASE("a block's ARRAY variable compares with an ARRAY, either side") {
+    FB_Buffer fb;
+    fb("iIn"_ = INT(7));
+    fb("iIn"_ = INT(8));
+    const ARRAY<INT, 1, 4> aiExpected{7, 8};
+    CHECK(fb.aLast == aiExpected);
+    CHECK(aiExpected == fb.aLast);
+    CHECK(fb.aLast != ARRAY<INT, 1, 4>{7, 8, 9});
+  }
+
+  TEST_CASE("ARRAYs that differ only in their index check compare") {
+    const basic_array<array_check::bounds, INT, 1, 3> a{1, 2, 3};
+    const basic_array<array_check::none, INT, 1, 3> b{1, 2, 3};
+    CHECK(a == b);
+    CHECK(b == a);
+    CHECK_FALSE(a != b);
+    CHECK(a != basic_array<array_check::none, INT, 1, 3>{1, 2, 4});
   }
 
   TEST_CASE("CheckBounds: an index out of range is a fault, then the nearest bound is used") {

@@ -65,9 +65,10 @@ static_assert(std::is_same_v<decltype(LTIME_TO_WSTRING(LTIME())), WSTRING<80>>);
 static_assert(std::is_same_v<decltype(WSTRING_TO_LTIME(u"")), LTIME>);
 static_assert(std::is_same_v<decltype(STRING_TO_BOOL(STRING<7>())), BOOL>);
 static_assert(std::is_same_v<decltype(TO_LWORD(1)), LWORD>);
-// A named conversion takes its source type, or what converts to it implicitly.
-static_assert(std::is_invocable_v<decltype(INT_TO_DINT), SINT> && !std::is_invocable_v<decltype(INT_TO_DINT), DINT>);
-static_assert(!std::is_invocable_v<decltype(TIME_TO_DINT), DINT> && !std::is_invocable_v<decltype(STRING_TO_INT), INT>);
+// A named conversion takes its source type, or what converts to it implicitly; another type is
+// refused with a message naming both (tests/compile_fail/conversion_wrong_source.cpp).
+static_assert(detail::conversion_source<INT, SINT> && !detail::conversion_source<INT, DINT>);
+static_assert(!detail::conversion_source<TIME, DINT> && !std::is_invocable_v<decltype(STRING_TO_INT), INT>);
 
 TEST_SUITE("conversions") {
   TEST_CASE("every pair of elementary types converts, zero to zero") {

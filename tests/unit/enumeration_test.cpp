@@ -259,16 +259,16 @@ TEST_SUITE("enumerations") {
     static_assert(is_component(E_Mode::Auto));
   }
 
-  TEST_CASE("a variable of an enumeration is 0 when nothing initialises it, which may be no component") {
-    // CODESYS starts such a variable at the first component (E_Temp.Cold); C++ at 0: write the
-    // initial value (docs/porting-guide.md, ENUM).
+  TEST_CASE("a variable of an enumeration starts at its first component, as in CODESYS, where C++ gives E{} 0") {
+    // CODESYS starts such a variable at the first component (E_Temp.Cold); iecoop's variables do
+    // too (var<E>: docs/porting-guide.md, ENUM). C++ value-initialises a plain enum to 0, which
+    // need not be a component: a plain `E e` states its initial value.
     const E_Temp t{};
     CHECK(TO_SINT(t) == 0);
     CHECK(!is_component(t));
     const FB_Vars fb;
-    CHECK(fb.eTemp.get() == static_cast<E_Temp>(0));
-    const E_Temp first{E_Temp::Cold};  // eTemp : E_Temp;  (CODESYS: Cold)
-    CHECK(is_component(first));
+    CHECK(fb.eTemp.get() == E_Temp::Cold);  // eTemp : E_Temp;  (CODESYS: Cold, -20)
+    CHECK(is_component(fb.eTemp.get()));
     CHECK(std::is_trivially_copyable_v<E_Temp>);
   }
 

@@ -26,4 +26,12 @@ TEST_SUITE("ostream") {
     CHECK(printed(STRING<>("abc")) == "abc");
     CHECK(printed(WSTRING<>(u"\u00e4")) == "\xC3\xA4");
   }
+
+  TEST_CASE("an ARRAY prints as ST writes its initial value") {
+    CHECK(printed(ARRAY<INT, 1, 3>{1, -2, 3}) == "[1, -2, 3]");
+    CHECK(printed(ARRAY<INT, 1, 2, 1, 2>{1, 2, 3, 4}) == "[1, 2, 3, 4]");  // row by row
+    CHECK(printed(ARRAY<ARRAY<BYTE, 0, 1>, 0, 1>{ARRAY<BYTE, 0, 1>{1, 2}}) == "[[1, 2], [0, 0]]");
+    CHECK(printed(ARRAY<TIME, 1, 2>{"T#1s"_iec}) == "[T#1s, T#0ms]");
+    CHECK(printed(ARRAY<STRING<>, 1, 2>{STRING<>("a b")}) == "[a b, ]");
+  }
 }

@@ -68,10 +68,13 @@ class checker {
         if (name != "local" && name != "function_block") continue;
         CXFile file = nullptr;
         clang_getExpansionLocation(clang_getCursorLocation(member), &file, nullptr, nullptr, nullptr);
+        // Both are declared in …/include/iecoop/pou/: the library is that directory's parent.
         const std::string path = real_path(file);
         const std::size_t slash = path.rfind('/');
-        if (slash != std::string::npos) {
-          library_dir_ = path.substr(0, slash + 1);
+        const std::size_t parent =
+            slash == std::string::npos || slash == 0 ? std::string::npos : path.rfind('/', slash - 1);
+        if (parent != std::string::npos) {
+          library_dir_ = path.substr(0, parent + 1);
           return;
         }
       }
@@ -275,6 +278,116 @@ class checker {
     }
   }
 
+  // --- Initial values -----------------------------------------------------------------
+
+  /// A C++ scalar (an enum, an arithmetic type, a pointer) or a built-in array of them: a
+  /// variable of it that is default-initialised is undefined.
+  static bool is_raw_scalar(CXType t) {
+    t = clang_getCanonicalType(t);
+    while (t.kind == CXType_ConstantArray) t = clang_getCanonicalType(clang_getArrayElementType(t));
+    if (t.kind == CXType_Enum || t.kind == CXType_Pointer || t.kind == CXType_MemberPointer) return true;
+    return t.kind >= CXType_FirstBuiltin && t.kind <= CXType_LastBuiltin && t.kind != CXType_Void;
+  }
+
+  /// A declaration's initialiser: an expression among its children (`= E::A`, `{}`).
+  static bool has_initialiser(CXCursor declaration) {
+    const std::vector<CXCursor> parts = children(declaration);
+    return std::any_of(parts.begin(), parts.end(),
+                       [](CXCursor part) { return clang_isExpression(clang_getCursorKind(part)) != 0; });
+  }
+
+  static std::string type_spelling(CXCursor declaration) {
+    return text(clang_getTypeSpelling(clang_getCursorType(declaration)));
+  }
+
+  /// Check 5: a member of a C++ scalar type without an initial value, in a block or a STRUCT
+  /// (a class without constructors of its own) — or in a class whose constructors do not
+  /// initialise it. Unions state their own constructor (docs/porting-guide.md) and are left out.
+  void check_uninitialised_members(CXCursor cls) {
+    if (clang_getCursorKind(cls) == CXCursor_ClassTemplate) return;  // its members' types are not known yet
+    std::set<std::string> initialised;  // the members a constructor's initialiser list names
+    bool has_constructor = false;       // other than the copy and move constructors
+    for (const CXCursor member : children(cls)) {
+      if (clang_getCursorKind(member) != CXCursor_Constructor) continue;
+      if (clang_CXXConstructor_isCopyConstructor(member) != 0 || clang_CXXConstructor_isMoveConstructor(member) != 0) {
+        continue;
+      }
+      has_constructor = true;
+      for (const CXCursor part : children(member)) {
+        if (clang_getCursorKind(part) == CXCursor_MemberRef) initialised.insert(usr(clang_getCursorReferenced(part)));
+      }
+    }
+    if (has_constructor && !info(cls).is_block) return;  // a class of its own making, not a STRUCT
+    for (const CXCursor member : children(cls)) {
+      if (clang_getCursorKind(member) != CXCursor_FieldDecl || !is_raw_scalar(clang_getCursorType(member))) continue;
+      if (has_initialiser(member) || initialised.count(usr(member)) != 0) continue;
+      const std::string name = class_name(cls) + "::" + spelling(member);
+      report(member, name + " (" + type_spelling(member) + ") has no initial value: C++ leaves it undefined wherever " +
+                         class_name(cls) +
+                         " is default-initialised (a local variable, a member of a block declared as one), where ST "
+                         "starts it at 0, FALSE or its enumeration's first component; write its initial value (" +
+                         spelling(member) + " = ...), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
+    }
+  }
+
+  /// A function or lambda that takes a METHOD's or FUNCTION's variables (`args<Vars>`).
+  static bool takes_args(CXCursor function) {
+    const std::vector<CXCursor> parts = children(function);
+    return std::any_of(parts.begin(), parts.end(), [](CXCursor part) {
+      return clang_getCursorKind(part) == CXCursor_ParmDecl &&
+             is_iecoop_class(class_of(clang_getCursorType(part)), "args");
+    });
+  }
+
+  /// Check 5 for a local variable (ST's VAR_TEMP, a METHOD's or FUNCTION's VAR) of a C++
+  /// scalar type without an initial value: of an enumeration anywhere, of another scalar in
+  /// the code of a POU (a block's member function, a function or lambda taking args<Vars>; the
+  /// C++ around a port, such as main()'s option parsing, is C++'s).
+  void check_uninitialised_local(CXCursor variable, const code_context* context) {
+    const CXType type = clang_getCursorType(variable);
+    if (clang_Cursor_getStorageClass(variable) == CX_SC_Static || clang_Cursor_hasVarDeclGlobalStorage(variable) == 1) {
+      check_static_enumeration(variable, type);
+      return;
+    }
+    if (!is_raw_scalar(type) || has_initialiser(variable)) return;
+    const bool pou_code =
+        pou_code_depth_ > 0 ||
+        (context != nullptr &&
+         ((!is_null(context->owner_class) && info(context->owner_class).is_block) || takes_args(context->function)));
+    if (clang_getCanonicalType(type).kind != CXType_Enum && !pou_code) return;
+    const std::string where = context == nullptr && pou_code_depth_ > 0 ? "a FUNCTION" : context_name(context);
+    report(variable, where + ": the local variable " + spelling(variable) + " (" + type_spelling(variable) +
+                         ") has no initial value: C++ leaves it undefined until it is assigned, where ST starts a "
+                         "variable at 0, FALSE or its enumeration's first component; write its initial value (" +
+                         spelling(variable) + " = ...), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
+  }
+
+  /// The first enumerator of an enum type that is not 0 (where C++ zero-initialises a static
+  /// variable of it and ST starts it at the first component), or a null cursor.
+  static CXCursor first_enumerator_not_zero(CXType type) {
+    type = clang_getCanonicalType(type);
+    while (type.kind == CXType_ConstantArray) type = clang_getCanonicalType(clang_getArrayElementType(type));
+    if (type.kind != CXType_Enum) return clang_getNullCursor();
+    const CXCursor declaration = clang_getTypeDeclaration(type);
+    for (const CXCursor enumerator : children(declaration)) {
+      if (clang_getCursorKind(enumerator) != CXCursor_EnumConstantDecl) continue;
+      return clang_getEnumConstantDeclValue(enumerator) != 0 ? enumerator : clang_getNullCursor();
+    }
+    return clang_getNullCursor();
+  }
+
+  /// Check 5 for a static variable (VAR_STAT, a global, a `static` local) of an enumeration
+  /// whose first component is not 0: C++ zero-initialises it.
+  void check_static_enumeration(CXCursor variable, CXType type) {
+    if (clang_isCursorDefinition(variable) == 0 || has_initialiser(variable)) return;
+    const CXCursor first = first_enumerator_not_zero(type);
+    if (is_null(first)) return;
+    report(variable, "the static variable " + spelling(variable) + " (" + type_spelling(variable) +
+                         ") has no initial value: C++ zero-initialises it, to 0, which is not " + spelling(first) +
+                         ", the first component where ST starts it; write its initial value (" + spelling(variable) +
+                         " = ...)");
+  }
+
   // --- Code ---------------------------------------------------------------------------
 
   /// The variables of a block's method, from its `args<Vars>` parameters.
@@ -458,7 +571,10 @@ class checker {
   void walk(CXCursor c) {
     const CXCursorKind kind = clang_getCursorKind(c);
     if (clang_isDeclaration(kind) != 0 && !is_user_location(clang_getCursorLocation(c))) return;
-    if (is_class_kind(kind) && clang_isCursorDefinition(c) != 0) check_block_class(c);
+    if (is_class_kind(kind) && clang_isCursorDefinition(c) != 0) {
+      check_block_class(c);
+      check_uninitialised_members(c);
+    }
     if (is_function_kind(kind)) {
       if (clang_isCursorDefinition(c) == 0) return;  // a declaration only: nothing to check
       CXCursor owner = clang_getCursorSemanticParent(c);
@@ -474,6 +590,19 @@ class checker {
       check_builtin_write(c, context);
     }
     if (kind == CXCursor_MemberRefExpr) check_shadowed(c, context);
+    if (kind == CXCursor_VarDecl && loop_variables_.count(clang_hashCursor(c)) == 0)
+      check_uninitialised_local(c, context);
+    if (kind == CXCursor_LambdaExpr && takes_args(c)) {  // a FUNCTION: [](args<Vars> in) { ... }
+      ++pou_code_depth_;
+      for (const CXCursor child : children(c)) walk(child);
+      --pou_code_depth_;
+      return;
+    }
+    if (kind == CXCursor_CXXForRangeStmt) {  // `for (E e : a)`: the loop variable is initialised by the loop
+      for (const CXCursor child : children(c)) {
+        if (clang_getCursorKind(child) == CXCursor_VarDecl) loop_variables_.insert(clang_hashCursor(child));
+      }
+    }
     for (const CXCursor child : children(c)) walk(child);
   }
 
@@ -482,6 +611,8 @@ class checker {
   std::map<CXFile, bool> user_files_;
   std::map<std::string, class_info> classes_;
   std::vector<code_context> contexts_;
+  std::set<unsigned> loop_variables_;
+  int pou_code_depth_ = 0;  // inside a lambda that takes args<Vars>
   std::vector<finding> findings_;
 };
 

@@ -7,8 +7,9 @@
 // REAL and LREAL as LREAL), so the functions use the same rule, with the same diagnostics for
 // types that do not meet. Not for direct inclusion.
 //
-// - A variable wrapper (var<INT>, retain<>, an in-out, a located variable, a property) passes
-//   its value.
+// - A variable wrapper (var<INT>, retain<>, an in-out, a located variable, a property, a
+//   subrange, a var<> of a subrange) passes its value: argument_t and argument_value
+//   (detail/value_operators.hpp) unwrap it.
 // - An intermediate result keeps its register: MAX(i + 1, j) is an intermediate<INT> that still
 //   holds 32768 for i = 32767, as `i + 1 > j` sees it.
 // - A C++ number (`MAX(iSpeed, 100)`) takes the type of the IEC arguments; a C++ integer is no
@@ -33,10 +34,6 @@
 #include <iecoop/detail/push_macros.hpp>
 
 namespace iecoop::detail {
-
-/// An argument's value type, a wrapper's unwrapped.
-template <class X>
-using argument_t = unwrapped_t<X>;
 
 /// An argument of an IEC type (a value, an intermediate result, an enumeration's component, or
 /// a variable of one).
@@ -187,9 +184,9 @@ template <class C, class X>
 constexpr C as_common(X&& x) {
   if constexpr (int_value<argument_t<X>> && is_intermediate<C>::value) {
     // Register to register: an intermediate of a narrower type keeps its whole value.
-    return C::from_register(in_register<nominal_t<C>>(value_of(std::forward<X>(x))));
-  } else if constexpr (iec_argument<X> && requires { static_cast<C>(value_of(std::forward<X>(x))); }) {
-    return static_cast<C>(value_of(std::forward<X>(x)));
+    return C::from_register(in_register<nominal_t<C>>(argument_value(std::forward<X>(x))));
+  } else if constexpr (iec_argument<X> && requires { static_cast<C>(argument_value(std::forward<X>(x))); }) {
+    return static_cast<C>(argument_value(std::forward<X>(x)));
   } else if constexpr (iec_argument<X>) {
     return C{};  // a type that does not meet the others: arguments_check has reported it
   } else if constexpr (is_iec_string<C>::value && std::is_constructible_v<C, X>) {

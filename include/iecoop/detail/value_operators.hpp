@@ -53,6 +53,42 @@ struct unwrapped<X, true> {
 template <class X>
 using unwrapped_t = typename unwrapped<X>::type;
 
+template <class X, bool = value_wrapper<X>>
+struct argument_type {
+  using type = std::remove_cvref_t<X>;
+};
+template <class X>
+struct argument_type<X, true> {
+  using type = typename argument_type<typename std::remove_cvref_t<X>::value_type>::type;
+};
+/// The IEC type an argument of a function stands for (the conversions, the generic standard
+/// functions): a wrapper's value type, unwrapped again where that is a wrapper itself (a var<> or
+/// an in-out of a subrange: the subrange's base type); anything else itself. The one place where
+/// every variable form — a block's var<>, retain<>, a property, a located variable, an in-out or
+/// REFERENCE, a method's output<> and temp<>, a subrange, a bit `x.N` — becomes its IEC type.
+template <class X>
+using argument_t = typename argument_type<X>::type;
+
+/// An argument's value, of type argument_t<X>: value_of until it is no wrapper. A property is
+/// read through its Get on the block as given (non-const: Get is called as in any expression).
+template <class X>
+constexpr decltype(auto) argument_value(X&& x) {
+  if constexpr (!value_wrapper<X>) {
+    return std::forward<X>(x);
+  } else {
+    using V = decltype(std::forward<X>(x).get());
+    if constexpr (!value_wrapper<V>) {
+      return std::forward<X>(x).get();
+    } else if constexpr (std::is_reference_v<V>) {
+      return argument_value(std::forward<X>(x).get());
+    } else {
+      // A wrapper returned by value (none of iecoop's today): its value, by value, not a
+      // reference into the temporary.
+      return argument_t<X>(argument_value(std::forward<X>(x).get()));
+    }
+  }
+}
+
 template <class X>
 struct is_std_string : std::false_type {};
 template <class C, class Traits, class Alloc>

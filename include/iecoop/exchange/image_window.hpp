@@ -9,39 +9,22 @@
 //
 // Registers are the image's 16-bit words as CODESYS stores them (little-endian: %IX0.0 is bit 0
 // of the first register); bits count from the window's first bit. The windows are checked
-// when made (a device's configuration is often read at run time), never when used.
+// when made (a device's configuration is often read at run time), never when used. The window
+// itself, image_window, and copy_window() are the I/O layer's (<iecoop/io/footprint.hpp>).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <span>
 #include <string_view>
 
 #include <iecoop/config.hpp>
 #include <iecoop/io/address.hpp>
+#include <iecoop/io/footprint.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 
 namespace iecoop {
-
-/// A run of bits of one area of the process image.
-struct image_window {
-  io_area area = io_area::input;
-  std::uint32_t first_bit = 0;  ///< from bit 0 of byte 0 of the area
-  std::uint32_t bits = 0;       ///< 16 per register
-
-  [[nodiscard]] constexpr std::uint32_t first_byte() const noexcept { return first_bit / 8; }
-  /// One past the last byte the window touches.
-  [[nodiscard]] constexpr std::uint32_t end_byte() const noexcept { return (first_bit + bits + 7) / 8; }
-  [[nodiscard]] constexpr std::uint32_t registers() const noexcept { return bits / 16; }
-  [[nodiscard]] constexpr bool empty() const noexcept { return bits == 0; }
-  /// TRUE if the two windows share a bit.
-  [[nodiscard]] constexpr bool overlaps(const image_window& other) const noexcept {
-    return area == other.area && !empty() && !other.empty() && first_bit < other.first_bit + other.bits &&
-           other.first_bit < first_bit + bits;
-  }
-};
 
 /// A window, or why the configuration gives none (`error`: a message, "iecoop: ...; ...").
 struct window_parse {
@@ -130,27 +113,6 @@ inline void store_register(std::span<std::byte> area, const image_window& w, std
   const std::uint32_t byte = w.first_byte() + 2 * i;
   area[byte] = static_cast<std::byte>(value & 0xFFU);
   area[byte + 1] = static_cast<std::byte>(value >> 8);
-}
-
-/// Copies the window's bits from `from` to `to` (two copies of the same area), leaving every
-/// other bit of `to` as it is.
-inline void copy_window(std::span<std::byte> to, std::span<const std::byte> from, const image_window& w) noexcept {
-  if (w.empty()) return;
-  std::uint32_t byte = w.first_byte();
-  const std::uint32_t end = w.end_byte();
-  const std::uint32_t head = w.first_bit % 8;
-  const std::uint32_t tail = (w.first_bit + w.bits) % 8;
-  if (head == 0 && tail == 0) {  // whole bytes: registers, or bits from bit 0 in multiples of 8
-    std::memcpy(to.data() + byte, from.data() + byte, end - byte);
-    return;
-  }
-  for (; byte < end; ++byte) {
-    unsigned mask = 0xFFU;
-    if (byte == w.first_byte()) mask &= 0xFFU << head;
-    if (byte + 1 == end && tail != 0) mask &= 0xFFU >> (8 - tail);
-    const auto m = static_cast<std::byte>(mask);
-    to[byte] = (to[byte] & ~m) | (from[byte] & m);
-  }
 }
 
 }  // namespace iecoop

@@ -73,9 +73,11 @@ enum class modbus_error_value : std::uint8_t {
 /// A channel: a run of one table of the device, and where it lies in the process image.
 struct modbus_channel {
   modbus_table table = modbus_table::holding_registers;
-  std::uint16_t remote = 0;    ///< the device's first address of the run (PDU addressing, from 0)
-  std::uint16_t count = 1;     ///< registers (at most 125 read, 123 written) or bits (2000, 1968)
-  std::string image = "%IW0";  ///< the first image address: %IW/%IX for a read channel, %QW/%QX for a write channel
+  std::uint16_t remote = 0;  ///< the device's first address of the run (PDU addressing, from 0)
+  std::uint16_t count = 1;   ///< registers (at most 125 read, 123 written) or bits (2000, 1968)
+  /// The first image address, which must be given: %IW/%IX for a read channel, %QW/%QX for a
+  /// write channel (as the channel's I/O mapping shows it in CODESYS).
+  std::string image{};
   modbus_error_value on_error = modbus_error_value::safe_value;  ///< read channels
   std::vector<std::uint16_t> safe{};  ///< read channels: the safe value of each register (of each bit: != 0), 0 beyond
 };
@@ -126,7 +128,11 @@ class modbus_client {
   using image_type = Image;
 
   explicit modbus_client(std::vector<modbus_device_config> devices) {
-    for (modbus_device_config& config : devices) devices_.push_back(std::make_unique<device>(std::move(config)));
+    for (modbus_device_config& config : devices) {
+      devices_.push_back(std::make_unique<device>(std::move(config)));
+      for (const channel_window& r : devices_.back()->reads) written_.push_back(r.window);
+      for (const channel_window& w : devices_.back()->writes) sent_.push_back(w.window);
+    }
   }
   modbus_client(const modbus_client&) = delete;
   modbus_client& operator=(const modbus_client&) = delete;
@@ -174,6 +180,12 @@ class modbus_client {
   [[nodiscard]] const modbus_device_status& status(std::size_t index) const noexcept {
     return devices_[index]->latched;
   }
+
+  /// The input bits read_inputs() writes: every device's read channels (those of a device whose
+  /// configuration is wrong excepted). An io_chain checks them against its other drivers'.
+  [[nodiscard]] std::span<const image_window> input_footprint() const noexcept { return written_; }
+  /// The output bits write_outputs() sends: every device's write channels.
+  [[nodiscard]] std::span<const image_window> output_footprint() const noexcept { return sent_; }
 
   /// IoDriver: each device's newest inputs (and status) into the image.
   void read_inputs(std::span<std::byte> inputs) noexcept {
@@ -255,6 +267,11 @@ class modbus_client {
         return fail("iecoop: a Modbus device's poll interval and response timeout are at least 1 ms");
       }
       for (const modbus_channel& c : config.reads) {
+        if (c.image.empty()) {
+          return fail(
+              "iecoop: a read channel's image is not given; its registers or bits are inputs, where other "
+              "drivers' inputs may lie: give the first address (.image = \"%IW10\" or \"%IX30.0\")");
+        }
         const bool bits = is_bits(c.table);
         if (c.count > (bits ? MODBUS_MAX_READ_BITS : MODBUS_MAX_READ_REGISTERS)) {
           return fail("iecoop: a read channel holds at most 125 registers or 2000 bits (one request); split it");
@@ -268,6 +285,11 @@ class modbus_client {
       for (const modbus_channel& c : config.writes) {
         if (c.table == modbus_table::discrete_inputs || c.table == modbus_table::input_registers) {
           return fail("iecoop: discrete inputs and input registers are read only; write coils or holding registers");
+        }
+        if (c.image.empty()) {
+          return fail(
+              "iecoop: a write channel's image is not given; give the first output address it sends "
+              "(.image = \"%QW10\" or \"%QX30.0\")");
         }
         const bool bits = c.table == modbus_table::coils;
         if (c.count > (bits ? MODBUS_MAX_WRITE_BITS : MODBUS_MAX_WRITE_REGISTERS)) {
@@ -476,6 +498,7 @@ class modbus_client {
   };
 
   std::vector<std::unique_ptr<device>> devices_;
+  std::vector<image_window> written_, sent_;  // the footprints, made by the constructor
   bool polling_ = false;
   char error_text_[256] = {};  // start()'s message about overlapping devices
 };

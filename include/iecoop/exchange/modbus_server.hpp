@@ -5,9 +5,12 @@
 // program writes as outputs (%QW, %QX). Served by libmodbus (Debian: libmodbus-dev) in a
 // thread of its own; link the CMake target iecoop::modbus.
 //
-//     modbus_server<> hmi{{.port = 1502, .holding_registers = 16, .input_registers = 16}};
+//     modbus_server<> hmi{{.port = 1502, .holding_registers = 16, .holding_image = "%IW8", .input_registers = 16}};
 //     if (const char* error = hmi.start()) { std::puts(error); return 1; }
 //     plc.connect(hmi);                            // or io_chain{card, hmi}
+//
+// The holding registers (and coils) go to %I, where a local card's inputs may lie too: their
+// place is given, never assumed (CODESYS places a device's I/O mapping after the others').
 //
 // Consistency, as the process image's: a task cycle sees the holding registers as they were
 // at its start (a client's multi-register write is all there or not at all), and the clients
@@ -61,9 +64,11 @@ struct modbus_server_config {
       bind_address{};  ///< the local address to listen on; empty: every address (CODESYS: not bound to an adapter)
   std::uint16_t port = 502;  ///< 0: a free port the system chooses (port() tells)
   /// Holding registers (FC 3, 6, 16, 22, 23): written, and read back, by the clients; the
-  /// program reads them at %IW (CODESYS: "Holding registers (%IW)").
+  /// program reads them at %IW (CODESYS: "Holding registers (%IW)"), from `holding_image`,
+  /// which must be given ("%IW8", the first word as CODESYS's I/O mapping shows it): no default
+  /// lands on another driver's inputs unasked.
   std::uint16_t holding_registers = 10;
-  std::string holding_image = "%IW0";
+  std::string holding_image{};
   std::uint16_t holding_start = 0;
   /// Input registers (FC 4): read by the clients; the program writes them at %QW.
   std::uint16_t input_registers = 10;
@@ -72,9 +77,10 @@ struct modbus_server_config {
   /// Coils (FC 1, 5, 15) and discrete inputs (FC 2): 0 (CODESYS's default) addresses the bits
   /// of the registers' data — coil n is bit n % 16 of holding register n / 16, discrete input n
   /// likewise of the input registers; a count gives them a bit area of their own ("Discrete
-  /// Bit Areas"): coils at %IX, discrete inputs at %QX.
+  /// Bit Areas"): coils at %IX, from `coil_image` (which must then be given, "%IX32.0"),
+  /// discrete inputs at %QX.
   std::uint16_t coils = 0;
-  std::string coil_image = "%IX0.0";
+  std::string coil_image{};
   std::uint16_t coil_start = 0;
   std::uint16_t discrete_inputs = 0;
   std::string discrete_image = "%QX0.0";
@@ -167,6 +173,12 @@ class modbus_server {
 
   [[nodiscard]] const modbus_server_config& config() const noexcept { return config_; }
 
+  /// The input bits read_inputs() writes: the holding registers' window and the coils' (none
+  /// while the configuration is wrong). An io_chain checks them against its other drivers'.
+  [[nodiscard]] std::span<const image_window> input_footprint() const noexcept { return written_; }
+  /// The output bits write_outputs() serves: the input registers' window and the discrete inputs'.
+  [[nodiscard]] std::span<const image_window> output_footprint() const noexcept { return served_; }
+
   /// IoDriver: the cycle's start. The holding registers and coils as the clients last wrote
   /// them, into their %I windows (the rest of the inputs is left alone).
   void read_inputs(std::span<std::byte> inputs) noexcept {
@@ -198,6 +210,11 @@ class modbus_server {
     if (config_.client_timeout.count() < 1'000'000) {
       return "iecoop: a Modbus server's client_timeout is at least 1 ms (0 would wait for a stalled client forever)";
     }
+    if (config_.holding_image.empty()) {
+      return "iecoop: a Modbus server's holding_image is not given; the holding registers are inputs (%IW), where "
+             "other drivers' inputs may lie: give their first word, as CODESYS's I/O mapping shows it "
+             "(holding_image = \"%IW8\")";
+    }
     const window_parse holding = register_window(config_.holding_image, config_.holding_registers, io_area::input,
                                                  Image::mode, Image::input_bytes);
     if (!holding) return holding.error;
@@ -209,6 +226,11 @@ class modbus_server {
     coil_window_ = {};
     discrete_window_ = {};
     if (!shared_bits()) {
+      if (config_.coil_image.empty()) {
+        return "iecoop: a Modbus server's coil_image is not given; coils of their own are inputs (%IX), where other "
+               "drivers' inputs may lie: give the first bit (coil_image = \"%IX32.0\"), or 0 coils to address the "
+               "holding registers' bits";
+      }
       const window_parse coil =
           bit_window(config_.coil_image, config_.coils, io_area::input, Image::mode, Image::input_bytes);
       if (!coil) return coil.error;
@@ -228,6 +250,8 @@ class modbus_server {
       }
       discrete_window_ = *discrete;
     }
+    written_ = {holding_window_, coil_window_};
+    served_ = {input_window_, discrete_window_};
     return nullptr;
   }
 
@@ -498,9 +522,10 @@ class modbus_server {
 
   modbus_server_config config_;
   image_window holding_window_{}, input_window_{}, coil_window_{}, discrete_window_{};
-  const char* config_error_ = nullptr;        // what make_windows() found wrong
-  triple_buffer<input_area> from_clients_{};  // server thread -> cycle start
-  triple_buffer<output_area> to_clients_{};   // cycle end -> server thread
+  std::array<image_window, 2> written_{}, served_{};  // the footprints: set once the configuration is right
+  const char* config_error_ = nullptr;                // what make_windows() found wrong
+  triple_buffer<input_area> from_clients_{};          // server thread -> cycle start
+  triple_buffer<output_area> to_clients_{};           // cycle end -> server thread
 
   // The server thread's.
   detail::modbus_context context_;

@@ -29,6 +29,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
@@ -208,6 +209,40 @@ constexpr void check_interface() {
       "iecoop: two pins of the block have the same name; a derived block may not redeclare a variable of its base");
 }
 
+template <class Block, class Pin>
+constexpr void VAR_INPUT_or_VAR_OUTPUT_without_initial_value() {
+  static_assert(dependent_false<Block>,
+                "iecoop: the VAR_INPUT or VAR_OUTPUT spelled in `Pin` has a C++ type (an enum, int, bool, a pointer) "
+                "and no initial value: C++ leaves it undefined where the block is not value-initialised (a local "
+                "variable, a member), ST starts it at 0 or at the enumeration's first component; write its initial "
+                "value (`E_State eState = E_State::Idle;`), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
+}
+
+/// Each pin of B starts as ST says: a pin of a C++ scalar type (an enumeration) has an initial
+/// value (told where B can be constructed in a constant expression; iecoop-check tells the
+/// rest), a STRUCT pin's members have theirs.
+template <class B, class Pins, std::size_t... I>
+constexpr bool pins_start_defined(std::index_sequence<I...>) {
+  constexpr std::size_t count = sizeof...(I);
+  constexpr std::size_t undefined = [] {
+    std::size_t found = count;
+    ((found == count && member_left_undefined<B, pin<Pins, I>>() ? (found = I, 0) : 0), ...);
+    return found;
+  }();
+  if constexpr (undefined < count) {
+    VAR_INPUT_or_VAR_OUTPUT_without_initial_value<B, spelled_member_t<pin<Pins, undefined>>>();
+    return false;
+  } else {
+    return (require_st_start<std::remove_cvref_t<decltype(std::declval<B&>().*pin<Pins, I>)>>() && ...);
+  }
+}
+
+template <class B>
+constexpr void check_pins_start() {
+  using pins = typename concat_pins<inputs_of<B>, outputs_of<B>>::type;
+  static_assert((pins_start_defined<B, pins>(std::make_index_sequence<pins::size>{}), true));  // says what is wrong
+}
+
 /// Applies `Name := value` to a block: assigns an input, or binds an in-out.
 template <class B, NamedInput A>
 constexpr void apply_input(B& block, A&& argument) {
@@ -367,6 +402,7 @@ constexpr void report_invalid_call() {
 template <class B, class... A>
 void call_valid_block(B& block, A&&... arguments) {
   check_interface<B>();
+  check_pins_start<B>();
   (
       [&] {
         if constexpr (NamedInput<A>) apply_input(block, std::forward<A>(arguments));

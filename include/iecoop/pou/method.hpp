@@ -32,6 +32,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/reflect.hpp>
 #include <iecoop/pou/named_arguments.hpp>
 #include <iecoop/pou/variables.hpp>
@@ -115,6 +116,39 @@ constexpr void report_invalid_arguments() {
       ...);
 }
 
+/// The field I of Vars is an enumeration without an initial value in Vars whose ST initial
+/// value is not 0: args<Vars> value-initialises it to 0, and then sets it to its first
+/// component (ST initialises a method's variables at every call).
+template <class Vars, std::size_t I>
+constexpr bool field_starts_late() noexcept {
+  if constexpr (std::is_enum_v<field_type<Vars, I>>) {
+    if constexpr (field_left_undefined<Vars, I>()) {
+      return starts_nonzero<field_type<Vars, I>>();
+    } else {
+      return false;
+    }
+  } else {
+    return false;
+  }
+}
+
+/// Sets the variables that value-initialisation does not start as ST does (see field_starts_late).
+template <class Vars>
+constexpr void start_variables(Vars& vars) {
+  if constexpr (Reflectable<Vars>) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      static_assert((members_start_defined<Vars>(std::index_sequence<I...>{}), true));  // says what is wrong
+      (
+          [&] {
+            if constexpr (field_starts_late<Vars, I>()) {
+              get_field<I>(vars) = enum_start<field_type<Vars, I>>();
+            }
+          }(),
+          ...);
+    }(std::make_index_sequence<field_count<Vars>>{});
+  }
+}
+
 }  // namespace detail
 
 /// The position of the first VAR_OUTPUT in Vars (field_count<Vars> if there is none).
@@ -161,7 +195,7 @@ class args : public Vars {
   using vars_type = Vars;
 
   /// No arguments: every variable at its declared initial value.
-  constexpr args() : Vars() {}
+  constexpr args() : Vars() { detail::start_variables<Vars>(*this); }
   constexpr args(const Vars& vars) : Vars(vars) {}  // implicit: the variables, filled elsewhere
 
   /// Arguments positionally (in declaration order), then named in any order.
@@ -171,6 +205,7 @@ class args : public Vars {
     if constexpr (!detail::arguments_valid<Vars, A...>()) {
       detail::report_invalid_arguments<Vars, A...>();
     } else {
+      detail::start_variables<Vars>(*this);
       [&]<std::size_t... K>(std::index_sequence<K...>) {
         (apply<K>(std::forward<A>(arguments)), ...);
       }(std::index_sequence_for<A...>{});

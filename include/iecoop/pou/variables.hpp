@@ -16,6 +16,7 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/detail/value_operators.hpp>
@@ -158,7 +159,7 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
   [[nodiscard]] constexpr T& storage() noexcept { return value_; }
 
  private:
-  T value_{};
+  T value_ = initial_value<T>();
 };
 
 /// A variable everyone may assign (local<>, temp<>, retain<>, persistent<>), with ST's
@@ -369,8 +370,8 @@ class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_
   static T& unbound() {
     fault(fault_kind::unbound_in_out, "VAR_IN_OUT used before it was bound to a variable");
     if constexpr (std::is_default_constructible_v<value_type> && std::is_copy_assignable_v<value_type>) {
-      static value_type scratch = value_type();
-      scratch = value_type();
+      static value_type scratch = detail::stand_in_value<value_type>();
+      scratch = detail::stand_in_value<value_type>();
       return scratch;
     } else {
       // No stand-in can be made for this type (an abstract block, a block with FB_Init
@@ -472,8 +473,8 @@ class in_out<basic_array<Check, T, Stars...>> {
  private:
   static T& unbound() {
     fault(fault_kind::unbound_in_out, "VAR_IN_OUT ARRAY[*] used before it was bound to an ARRAY");
-    static T scratch{};
-    scratch = T{};
+    static T scratch = detail::stand_in_value<T>();
+    scratch = detail::stand_in_value<T>();
     return scratch;
   }
 
@@ -569,7 +570,7 @@ class output : public detail::condition_conversion<output<T>, T>, public detail:
   }
 
  private:
-  T value_{};
+  T value_ = detail::initial_value<T>();
   void* target_ = nullptr;
   void (*deliver_)(void*, const T&) = nullptr;
 };

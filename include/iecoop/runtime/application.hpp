@@ -37,6 +37,7 @@
 #include <string_view>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/io/driver.hpp>
@@ -116,10 +117,17 @@ class application {
    * Returns FALSE in the exception state (reset first), and if the RETAIN and PERSISTENT
    * variables need more than the retain memory (a fault of kind invalid_value; the
    * application stays stopped: give it retain_capacity<N>{} with the N the fault names).
+   * Returns FALSE too, before anything else, while the connected I/O driver reports a
+   * configuration error (an io_chain of two drivers that write the same input bits: a fault of
+   * kind invalid_value with its message, which names them).
    */
   bool start(start_mode mode = start_mode::restart) {
     if (scheduler_.state() == scheduler_state::exception) return false;
     if (scheduler_.state() == scheduler_state::running) return true;
+    if (const char* error = scheduler_.cycles().io_configuration_error()) {
+      fault(fault_kind::invalid_value, error);
+      return false;
+    }
     if (!constructed_ && !load(mode)) return false;
     return scheduler_.start();
   }
@@ -191,10 +199,11 @@ class application {
 
   /// Runs every task that is due in [now(), now() + duration), in priority order, and
   /// leaves now() at the end of that span. Time passes also while the tasks do not run.
-  void run_for(LTIME duration) { scheduler_.run_for(duration); }
+  /// A duration is TIME, LTIME or std::chrono: `run_for(3000)` does not compile (3000 what?).
+  void run_for(detail::duration_argument duration) { scheduler_.run_for(duration); }
 
-  /// Runs every task that is due before `until` (see run_for).
-  void run_until(LTIME until) { scheduler_.run_until(until); }
+  /// Runs every task that is due before `until` (see run_for), a time since the start.
+  void run_until(detail::duration_argument until) { scheduler_.run_until(until); }
 
   /// Runs `n` base cycles: n times the shortest cyclic interval (1 ms without cyclic tasks).
   void run_cycles(std::uint64_t n) { run_for(base_cycle() * n); }
@@ -247,8 +256,17 @@ class application {
 
   /// Uses `driver` for the I/O from now on: its inputs are latched at the start of each task
   /// cycle, the outputs a cycle changed are written at its end. The driver must outlive its use.
+  /// start() refuses a driver whose configuration_error() reports one (an io_chain of two
+  /// drivers on the same input bits); while the tasks run, connect() refuses it: a fault of
+  /// kind invalid_value, and the driver connected before stays.
   template <IoDriver D>
   void connect(D& driver) noexcept {
+    if (scheduler_.state() == scheduler_state::running) {
+      if (const char* error = detail::configuration_error_of(driver)) {
+        fault(fault_kind::invalid_value, error);
+        return;
+      }
+    }
     scheduler_.cycles().connect(driver);
   }
 

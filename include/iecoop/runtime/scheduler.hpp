@@ -34,6 +34,7 @@
 #include <iecoop/fault.hpp>
 #include <iecoop/runtime/cycle_observer.hpp>
 #include <iecoop/runtime/task.hpp>
+#include <iecoop/runtime/task_info.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -44,18 +45,12 @@ template <std::size_t N, class Cycles>
 class scheduler;
 
 /**
- * A task as the scheduler runs it: its settings, its statistics, and the execution time a
- * simulation gives its cycles.
+ * A task as the scheduler runs it: its settings, its statistics, its cycle (the task_info it
+ * is, which code inside a block reads as current_task() during the task's cycles), and the
+ * execution time a simulation gives its cycles.
  */
-class task_state {
+class task_state : public task_info {
  public:
-  [[nodiscard]] const char* name() const noexcept { return settings_.name; }
-  [[nodiscard]] task_kind kind() const noexcept { return settings_.kind; }
-  [[nodiscard]] std::uint8_t priority() const noexcept { return settings_.priority; }
-  [[nodiscard]] LTIME interval() const noexcept { return settings_.interval; }
-  [[nodiscard]] const task_settings& settings() const noexcept { return settings_; }
-
-  [[nodiscard]] const task_statistics& statistics() const noexcept { return statistics_; }
   /// Starts the statistics afresh (CODESYS: IecTaskResetStatistics).
   void reset_statistics() noexcept { statistics_ = task_statistics{}; }
 
@@ -63,8 +58,6 @@ class task_state {
   [[nodiscard]] bool busy() const noexcept { return released_ || active_; }
   /// TRUE while a cycle is under way (begun, not ended).
   [[nodiscard]] bool active() const noexcept { return active_; }
-  /// The cycles begun since the tasks were last restarted: cycle n of model_execution_time.
-  [[nodiscard]] std::uint64_t cycle_number() const noexcept { return cycle_number_; }
 
   /// Calls `observer` once per cycle of this task, after the cycle's programs ran (see
   /// cycle_observer): a trace recorder or a watch list samples the task's variables there.
@@ -90,13 +83,9 @@ class task_state {
     return cost_function_ != nullptr ? cost_function_(cycle, cost_context_) : cost_constant_;
   }
 
-  task_settings settings_{};
-  task_statistics statistics_{};
+  // The settings, statistics, cycle number, release and start times are task_info's.
   LTIME next_release_ = LTIME::max();  // cyclic and freewheeling tasks
-  LTIME release_time_{};
-  LTIME start_time_{};
-  LTIME remaining_{};  // simulated processor time the running cycle still needs
-  std::uint64_t cycle_number_ = 0;
+  LTIME remaining_{};                  // simulated processor time the running cycle still needs
   std::uint32_t watchdog_streak_ = 0;  // watchdog overruns in a row
   bool released_ = false;
   bool active_ = false;
@@ -165,6 +154,7 @@ class scheduler {
               "a cyclic task needs an interval greater than zero; the task is never released");
       }
       tasks_[i].settings_ = s;
+      tasks_[i].index_ = static_cast<std::int32_t>(i);
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
     }
   }
@@ -210,6 +200,8 @@ class scheduler {
       t.watchdog_streak_ = 0;
       t.cycle_number_ = 0;
       t.event_previous_ = false;
+      t.last_exec_time_ = LTIME{};
+      t.overran_ = false;
     }
   }
 
@@ -275,10 +267,10 @@ class scheduler {
     t.released_ = false;
     t.active_ = true;
     ready_.begin(index, t.settings_.priority);
-    t.start_time_ = now_;
     t.remaining_ = t.cost_of(t.cycle_number_);
-    ++t.cycle_number_;
+    t.record_begin(now_);
     const detail::fault_context_scope in_task({t.settings_.name, nullptr});
+    const detail::current_task_scope current(t);  // current_task() in the programs
     if constexpr (requires { cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_); }) {
       cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_ - 1);  // calls the observers itself
     } else {
@@ -297,8 +289,7 @@ class scheduler {
     ready_.end(t.settings_.priority);
     t.remaining_ = LTIME{};
     cycles_.end_cycle(index, now_);
-    const LTIME cycle_time = now_ - t.start_time_;
-    t.statistics_.record(t.start_time_ - t.release_time_, cycle_time);
+    const LTIME cycle_time = t.record_end(now_);
     if (t.settings_.kind == task_kind::freewheeling)
       t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
     if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
@@ -360,8 +351,7 @@ class scheduler {
         t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
         if (t.next_release_ <= now_) {  // releases missed while late: omitted
           const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
-          t.statistics_.overruns += missed;
-          t.statistics_.consecutive_overruns += static_cast<std::uint32_t>(missed);
+          t.record_overruns(missed);
           t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
         }
       } else {
@@ -437,8 +427,7 @@ class scheduler {
   void release(std::size_t index, LTIME at) noexcept {
     task_state& t = tasks_[index];
     if (t.busy()) {
-      ++t.statistics_.overruns;
-      ++t.statistics_.consecutive_overruns;
+      t.record_overruns(1);
       return;
     }
     t.released_ = true;
@@ -453,7 +442,7 @@ class scheduler {
   // Forget every release and cycle under way (a stop, a reset, an exception).
   void clear_schedules() noexcept {
     for (task_state& t : tasks_) {
-      t.released_ = t.active_ = false;
+      t.released_ = t.active_ = t.overrun_pending_ = false;
       t.remaining_ = LTIME{};
     }
     ready_.clear();

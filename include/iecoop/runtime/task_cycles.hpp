@@ -94,6 +94,12 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
   void connect(D& driver) noexcept {
     io_ = callback_io{[](std::span<std::byte> in, void* d) { static_cast<D*>(d)->read_inputs(in); },
                       [](std::span<const std::byte> out, void* d) { static_cast<D*>(d)->write_outputs(out); }, &driver};
+    check_ = [](const void* d) noexcept { return configuration_error_of(*static_cast<const D*>(d)); };
+  }
+
+  /// The connected driver's configuration_error(): nullptr, or why it must not run.
+  [[nodiscard]] const char* io_configuration_error() const noexcept {
+    return check_ != nullptr ? check_(io_.context()) : nullptr;
   }
 
   /// The output area as it is now is what goes out with the next cycle's outputs (what the
@@ -116,6 +122,7 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
   std::array<staged_outputs, sizeof...(Tasks)> staged_{};
   std::array<std::byte, output_bytes> published_{};
   callback_io io_{};  // the connected driver; without one, nothing is read or written
+  const char* (*check_)(const void*) noexcept = nullptr;  // its configuration_error()
 };
 
 }  // namespace iecoop::detail

@@ -72,7 +72,7 @@ template <class In1, class In2>
 /// MOVE(IN): IN's value (ST's assignment as a function: `x := MOVE(y);` is `x := y;`).
 template <class In>
 [[nodiscard]] constexpr detail::argument_t<In> MOVE(const In& in) {
-  return detail::value_of(in);
+  return detail::argument_value(in);
 }
 
 }  // namespace iecoop

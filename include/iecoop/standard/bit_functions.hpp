@@ -53,7 +53,7 @@ constexpr long long shift_amount(const N& n) {
     if constexpr (cpp_integer<N>) {
       return n;
     } else {
-      return value_of(n).value();
+      return argument_value(n).value();
     }
   }();
   if (std::cmp_less(v, 0)) return -1;
@@ -65,7 +65,7 @@ constexpr long long shift_amount(const N& n) {
 template <class X>
 constexpr std::uint64_t shift_bits(const X& in) {
   using T = nominal_t<argument_t<X>>;
-  return static_cast<typename T::rep>(value_of(in).value());
+  return static_cast<typename T::rep>(argument_value(in).value());
 }
 
 /// N modulo the width, as a rotation needs it (negative N turns the other way).
@@ -76,7 +76,7 @@ constexpr unsigned rotation(const N& n) {
   if constexpr (cpp_integer<N>) {
     v = static_cast<long long>(n % static_cast<N>(width));
   } else {
-    const auto raw = value_of(n).value();
+    const auto raw = argument_value(n).value();
     v = static_cast<long long>(raw % static_cast<decltype(raw)>(width));
   }
   return static_cast<unsigned>(((v % width) + width) % width);
@@ -205,7 +205,7 @@ template <class In>
   requires(detail::iec_argument<In> && detail::bitwise_operand<In>)
 [[nodiscard]] constexpr auto NOT(const In& in) {
   using T = detail::nominal_t<detail::argument_t<In>>;
-  return T(~T(detail::value_of(in)));
+  return T(~T(detail::argument_value(in)));
 }
 
 }  // namespace iecoop

@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -58,8 +59,9 @@ class cycle_clock {
 
   /// Sets the time stamp of the cycle about to run.
   static void set(LTIME now) noexcept { stamp_ = stamp{now, TIME(now)}; }
-  /// Moves the time stamp forward by `elapsed` (wrapping like every LTIME operation).
-  static void advance(LTIME elapsed) noexcept { set(now() + elapsed); }
+  /// Moves the time stamp forward by `elapsed` (wrapping like every LTIME operation): a TIME,
+  /// an LTIME or a std::chrono duration; `advance(2000)` does not compile (2000 what?).
+  static void advance(detail::duration_argument elapsed) noexcept { set(now() + elapsed.get()); }
 
   /// Sets the time stamp for the lifetime of the scope and then restores the one before: a
   /// task cycle that interrupts another one leaves the interrupted cycle's time untouched.

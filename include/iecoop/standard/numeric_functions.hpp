@@ -61,7 +61,7 @@ constexpr auto real_rep_value(const X& x) {
   if constexpr (cpp_number_argument<X>) {
     return static_cast<R>(x);
   } else {
-    return static_cast<R>(value_of(x).value());
+    return static_cast<R>(argument_value(x).value());
   }
 }
 
@@ -81,7 +81,7 @@ real_of_t<X> apply_real(const X& x, Op op) {
 template <class In>
   requires(detail::int_value<detail::argument_t<In>> || detail::is_real<detail::argument_t<In>>::value)
 [[nodiscard]] constexpr auto ABS(const In& in) {
-  const auto v = detail::value_of(in);
+  const auto v = detail::argument_value(in);
   using V = std::remove_cvref_t<decltype(v)>;
   if constexpr (detail::is_real<V>::value) {
     using R = typename V::rep;

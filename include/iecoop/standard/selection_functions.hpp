@@ -46,7 +46,7 @@ constexpr long long selector_value(const K& k) {
     if (std::cmp_greater(k, std::numeric_limits<long long>::max())) return -1;
     return static_cast<long long>(k);
   } else {
-    const auto v = value_of(k).value();
+    const auto v = argument_value(k).value();
     if (std::cmp_greater(v, std::numeric_limits<long long>::max())) return -1;
     return static_cast<long long>(v);
   }
@@ -74,7 +74,7 @@ template <class G, class In0, class In1>
 [[nodiscard]] constexpr auto SEL(const G& g, In0&& in0, In1&& in1) {
   using C = detail::common_argument_t<In0, In1>;
   static_assert(sizeof(detail::arguments_check<In0, In1>) > 0);  // reports inputs that do not meet
-  if (static_cast<bool>(detail::value_of(g))) return detail::as_common<C>(std::forward<In1>(in1));
+  if (static_cast<bool>(detail::argument_value(g))) return detail::as_common<C>(std::forward<In1>(in1));
   return detail::as_common<C>(std::forward<In0>(in0));
 }
 

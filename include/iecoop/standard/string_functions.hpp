@@ -81,7 +81,7 @@ constexpr std::basic_string_view<char_of<S>> view_of(const S& s) noexcept {
 /// var<INT>, or an intermediate result such as `iAt - 1`), or a C++ integer.
 template <class T>
 concept position_argument = AnyInt<T> || cpp_integer<T> || (Intermediate<T> && AnyInt<typename T::nominal_type>) ||
-                            (value_wrapper<T> && AnyInt<unwrapped_t<T>>);
+                            (value_wrapper<T> && AnyInt<argument_t<T>>);
 
 /// The value of a length or position; unsigned values beyond the int64 range saturate
 /// (they are beyond any string anyway).

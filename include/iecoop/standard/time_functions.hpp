@@ -86,22 +86,22 @@ concept time_factor_argument = duration_factor<argument_t<N>>;
 /// MUL_TIME(IN1, IN2): IN1 * IN2 (ANY_NUM); integer factors wrap, REAL ones round to the ms.
 template <detail::time_factor_argument N>
 [[nodiscard]] constexpr TIME MUL_TIME(TIME in1, const N& in2) noexcept {
-  return in1 * detail::value_of(in2);
+  return in1 * detail::argument_value(in2);
 }
 /// MUL_LTIME(IN1, IN2): IN1 * IN2 (ANY_NUM).
 template <detail::time_factor_argument N>
 [[nodiscard]] constexpr LTIME MUL_LTIME(LTIME in1, const N& in2) noexcept {
-  return in1 * detail::value_of(in2);
+  return in1 * detail::argument_value(in2);
 }
 /// DIV_TIME(IN1, IN2): IN1 / IN2 (ANY_NUM), truncated; by 0 fault_kind::division_by_zero and T#0ms.
 template <detail::time_factor_argument N>
 [[nodiscard]] constexpr TIME DIV_TIME(TIME in1, const N& in2) {
-  return in1 / detail::value_of(in2);
+  return in1 / detail::argument_value(in2);
 }
 /// DIV_LTIME(IN1, IN2): IN1 / IN2 (ANY_NUM); by 0 fault_kind::division_by_zero and LTIME#0ns.
 template <detail::time_factor_argument N>
 [[nodiscard]] constexpr LTIME DIV_LTIME(LTIME in1, const N& in2) {
-  return in1 / detail::value_of(in2);
+  return in1 / detail::argument_value(in2);
 }
 
 /// CONCAT_DATE_TOD(IN1, IN2): the DT of the day IN1 at the time of day IN2 (a TOD past
@@ -138,7 +138,7 @@ constexpr std::int64_t component_value(const X& x) noexcept {
   if constexpr (cpp_integer<std::remove_cvref_t<X>>) {
     return static_cast<std::int64_t>(x);
   } else {
-    return static_cast<std::int64_t>(value_of(x).value());
+    return static_cast<std::int64_t>(argument_value(x).value());
   }
 }
 

@@ -14,7 +14,9 @@
 // Each cycle: the cycle clock is set to now(), forced values are written, the body runs,
 // forced values are written again, now() moves on by the cycle time. A fault the body cannot
 // go past (a call through an unassigned interface) ends the body's call; the next cycle calls
-// it again.
+// it again. The body runs in a task of its own (current_task(), <iecoop/runtime/task_info.hpp>):
+// "testing::cycles" (set_task_name() renames it), cyclic with the cycle time, priority 31, its
+// cycles taking no time.
 // IWYU pragma: private, include <iecoop/testing.hpp>
 #pragma once
 
@@ -22,6 +24,9 @@
 #include <cstdint>
 #include <type_traits>
 
+#include <iecoop/detail/duration_argument.hpp>
+#include <iecoop/runtime/task.hpp>
+#include <iecoop/runtime/task_info.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
 #include <iecoop/testing/driver.hpp>
 #include <iecoop/testing/faults.hpp>
@@ -43,7 +48,8 @@ class cycles : public driver<cycles<Body>> {
  public:
   /// Runs `body` once per `cycle_time`, the first cycle at `start` (the cycle clock's time).
   template <class B>
-  explicit cycles(B&& body, LTIME cycle_time = LTIME(TIME(10)), LTIME start = LTIME{})
+  explicit cycles(B&& body, iecoop::detail::duration_argument cycle_time = LTIME(TIME(10)),
+                  iecoop::detail::duration_argument start = LTIME{})
       : body_(std::forward<B>(body)), cycle_time_(cycle_time), now_(start) {}
 
   /// The time of the next cycle.
@@ -53,36 +59,53 @@ class cycles : public driver<cycles<Body>> {
   [[nodiscard]] LTIME cycle_time() const noexcept { return cycle_time_; }
   [[nodiscard]] LTIME step_time() const noexcept { return cycle_time_; }
   /// Changes the cycle time from the next cycle on.
-  void set_cycle_time(LTIME cycle_time) noexcept { cycle_time_ = cycle_time; }
+  void set_cycle_time(iecoop::detail::duration_argument cycle_time) noexcept { cycle_time_ = cycle_time; }
   /// Sets the time of the next cycle (a replay table's time_ms); time may also jump back.
-  void set_now(LTIME now) noexcept { now_ = now; }
+  void set_now(iecoop::detail::duration_argument now) noexcept { now_ = now; }
 
   /// n cycles (the drivers' step() and friends call this).
   void run_cycles(std::uint64_t n) {
+    using task_driver = iecoop::detail::task_info_driver;
     for (std::uint64_t i = 0; i < n; ++i) {
       cycle_clock::set(now_);
-      this->forces_.apply_at_start();
-      detail::call_guarded(body_);  // a call through an unassigned interface ends it (faults.hpp)
-      this->forces_.apply_at_end();
+      task_driver::configure(task_,
+                             task_settings{.name = task_name_, .kind = task_kind::cyclic, .interval = cycle_time_});
+      task_driver::begin(task_, now_);
+      {
+        const iecoop::detail::current_task_scope current(task_);
+        this->forces_.apply_at_start();
+        detail::call_guarded(body_);  // a call through an unassigned interface ends it (faults.hpp)
+        this->forces_.apply_at_end();
+      }
+      task_driver::end(task_, now_);
       now_ = now_ + cycle_time_;
       ++cycle_;
       this->stepped();
     }
   }
 
+  /// The body's task, as current_task() shows it in the body: its cycles, their start, the
+  /// first-cycle flag, statistics().
+  [[nodiscard]] const task_info& task() const noexcept { return task_; }
+  /// Names the body's task (current_task().name(), TwinCAT's TaskName) from the next cycle on;
+  /// `name` must outlive the driver (a string literal).
+  void set_task_name(const char* name) noexcept { task_name_ = name; }
+
  private:
   Body body_;
   LTIME cycle_time_;
   LTIME now_;
   std::uint64_t cycle_ = 0;
+  const char* task_name_ = "testing::cycles";
+  task_info task_;
 };
 
 template <class B>
 cycles(B&&) -> cycles<B>;
 template <class B>
-cycles(B&&, LTIME) -> cycles<B>;
+cycles(B&&, iecoop::detail::duration_argument) -> cycles<B>;
 template <class B>
-cycles(B&&, LTIME, LTIME) -> cycles<B>;
+cycles(B&&, iecoop::detail::duration_argument, iecoop::detail::duration_argument) -> cycles<B>;
 
 }  // namespace iecoop::testing
 

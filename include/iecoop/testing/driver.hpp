@@ -22,6 +22,7 @@
 #include <ostream>
 #include <type_traits>
 
+#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/ostream.hpp>
 #include <iecoop/testing/faults.hpp>
 #include <iecoop/testing/forcing.hpp>
@@ -86,7 +87,8 @@ class driver {
   }
 
   /// Runs the cycles due in the next `duration` of simulated time (rounded up to whole steps).
-  void advance(LTIME duration, call_site where = call_site::current()) {
+  /// A duration is TIME, LTIME or std::chrono: `advance(3000)` does not compile (3000 what?).
+  void advance(iecoop::detail::duration_argument duration, call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
     run(steps_in(duration));
   }
@@ -94,7 +96,8 @@ class driver {
   /// Runs cycles until `condition` holds (checked before the first and after each cycle), for
   /// at most `timeout` of simulated time. Use it in REQUIRE or CHECK: [[nodiscard]].
   template <class C>
-  [[nodiscard]] wait_result run_until(C&& condition, LTIME timeout, call_site where = call_site::current()) {
+  [[nodiscard]] wait_result run_until(C&& condition, iecoop::detail::duration_argument timeout,
+                                      call_site where = call_site::current()) {
     const detail::driving_scope driving(where);
     wait_result r;
     r.timeout = timeout;

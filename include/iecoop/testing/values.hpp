@@ -6,6 +6,10 @@
 //   INT, DINT, ... 42          BYTE 16#0F, WORD 16#00FF, ...      dates D#2026-11-26, ...
 //   STRING 'abc' ($' $$ $N)   WSTRING "abc"                      enumerations by name (enum_components;
 //                                                                 else their value)
+//   ARRAY [1, 2, 3], as ST writes its initial value: a multi-dimensional one row by row (ARRAY[1..2,
+//   1..2] OF INT: [1, 2, 3, 4]), an ARRAY OF ARRAY nested ([[1, 2], [3, 4]]), STRUCT elements as
+//   ST's structure literal ([(x := 1, y := 2.5)]); `CHECK(aiResult == aiExpected)` that fails
+//   prints `CHECK( [1, 2, 3] == [1, 2, 4] )`.
 //
 // The variables' wrappers (var<>, outputs, VAR_IN_OUT, RETAIN, PERSISTENT, located variables,
 // PROPERTYs) print their value. <iecoop/ostream.hpp> prints the same but for STRING (no quotes)
@@ -18,9 +22,11 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include <doctest/doctest.h>
 
+#include <iecoop/detail/reflect.hpp>
 #include <iecoop/detail/utf8.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/io/located.hpp>
@@ -28,6 +34,7 @@
 #include <iecoop/pou/variables.hpp>
 #include <iecoop/runtime/retain.hpp>
 #include <iecoop/sfc/step.hpp>
+#include <iecoop/types/array.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/string.hpp>
@@ -85,6 +92,50 @@ std::string st_text(const T& value) {
   return out.str();
 }
 
+template <array_check Check, class T, auto... Bounds>
+std::string st_text(const basic_array<Check, T, Bounds...>& value);
+
+namespace detail {
+namespace printing {
+using iecoop::operator<<;  // also for an enumeration in the user's namespace
+template <class T>
+concept printable = requires(std::ostream& os, const T& value) { os << value; };
+}  // namespace printing
+
+/// An ARRAY's element: as st_text prints it; a STRUCT (an aggregate that the ARRAY's `=`
+/// compares, with no operator<<) as ST's structure literal `(x := 1, y := 2.5)`.
+template <class T>
+std::string element_text(const T& value) {
+  if constexpr (requires { typename T::iecoop_array; } || printing::printable<T>) {
+    return st_text(value);
+  } else if constexpr (Reflectable<T> && iecoop::detail::comparable_element<T>) {
+    std::string text = "(";
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      apply_fields(value, [&](const auto&... fields) {
+        ((text += (I == 0 ? "" : ", "), text += field_name<T, I>, text += " := ", text += element_text(fields)), ...);
+      });
+    }(std::make_index_sequence<field_count<T>>{});
+    text += ")";
+    return text;
+  } else {
+    return "{?}";
+  }
+}
+}  // namespace detail
+
+/// An ARRAY as ST writes its initial value: [1, 2, 3]; row by row when it has more than one
+/// dimension, nested for an ARRAY OF ARRAY.
+template <array_check Check, class T, auto... Bounds>
+std::string st_text(const basic_array<Check, T, Bounds...>& value) {
+  std::string text = "[";
+  for (const T& element : value) {
+    if (&element != value.begin()) text += ", ";
+    text += detail::element_text(element);
+  }
+  text += "]";
+  return text;
+}
+
 namespace detail {
 template <class T>
 doctest::String st_string(const T& value) {
@@ -119,6 +170,12 @@ struct is_enum<E> {
 };
 }  // namespace detail::types
 #endif
+template <iecoop::array_check Check, class T, auto... Bounds>
+struct StringMaker<iecoop::basic_array<Check, T, Bounds...>> {
+  static String convert(const iecoop::basic_array<Check, T, Bounds...>& value) {
+    return iecoop::testing::detail::st_string(value);
+  }
+};
 template <class C, std::size_t N>
 struct StringMaker<iecoop::iec_string<C, N>> {
   static String convert(const iecoop::iec_string<C, N>& value) { return iecoop::testing::detail::st_string(value); }

@@ -5,7 +5,8 @@
 //
 // An ARRAY is an aggregate around one built-in array (no std::array: GCC 12 cannot bound a
 // loop over one and keeps every loop variable in memory), as large as CODESYS stores it,
-// zero-initialised like every PLC variable, trivially copyable when its elements are.
+// its elements starting at their type's initial value like every PLC variable (0, and an
+// enumeration's first component), trivially copyable when its elements are.
 // Multi-dimensional arrays are stored row by row (the last index varies fastest), as in
 // CODESYS, so `[1, 2, 3, 4]` fills a[1,1], a[1,2], a[2,1], a[2,2] of an ARRAY[1..2, 1..2].
 //
@@ -24,6 +25,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
@@ -150,6 +152,21 @@ constexpr std::size_t offset_in(array_index index, array_index lower, array_inde
   return static_cast<std::size_t>(index - lower);
 }
 
+/// The elements of an ARRAY of an enumeration whose initial value is not 0: each starts at it
+/// (C++ would value-initialise them to 0). As large as the built-in array it holds.
+template <class T, std::size_t N, class = std::make_index_sequence<N>>
+struct started_elements;
+template <class T, std::size_t N, std::size_t... I>
+struct started_elements<T, N, std::index_sequence<I...>> {
+  T values[N] = {((void)I, enum_start<T>())...};
+  constexpr T& operator[](std::size_t i) noexcept { return values[i]; }
+  constexpr const T& operator[](std::size_t i) const noexcept { return values[i]; }
+};
+/// An ARRAY's element storage: a built-in array, value-initialised (0, and the IEC types' own
+/// initial values), or started_elements where that is not ST's initial value.
+template <class T, std::size_t N>
+using array_elements = std::conditional_t<starts_nonzero<T>(), started_elements<T, N>, T[N]>;
+
 /// `N(value)` of an ST initialiser: the value N times.
 template <std::size_t N, class V>
 struct repeated {
@@ -224,10 +241,38 @@ struct array_initialiser {
                   "iecoop: more initial values than the ARRAY has elements; drop some or enlarge the ARRAY");
     A a{};
     std::size_t at = 0;
-    put_initials(a.elements_, at, values);
+    put_initials(a.data(), at, values);
     return a;
   }
 };
+
+/// Whether two ARRAY shapes have the same bounds, dimension by dimension (whatever the C++
+/// types of the bound constants).
+template <class A, class B>
+constexpr bool same_bounds() noexcept {
+  if constexpr (A::rank != B::rank) {
+    return false;
+  } else {
+    for (std::size_t d = 0; d < A::rank; ++d) {
+      if (A::lower(d) != B::lower(d) || A::upper(d) != B::upper(d)) return false;
+    }
+    return true;
+  }
+}
+
+/// An ARRAY's elements compare with `=`: IEC values, enumerations, ARRAYs of them, STRUCTs with
+/// an operator== of their own.
+template <class T>
+concept comparable_element = requires(const T& x) { static_cast<bool>(x == x); };
+
+/// The elements of two ARRAYs of one shape, in memory order: TRUE if all are equal.
+template <class T>
+constexpr bool equal_elements(const T* a, const T* b, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!static_cast<bool>(a[i] == b[i])) return false;
+  }
+  return true;
+}
 
 }  // namespace detail
 
@@ -275,6 +320,7 @@ struct basic_array {
                 "iecoop: an ARRAY's lower bound must not exceed its upper bound; write ARRAY[lower..upper]");
   static_assert(!std::is_reference_v<T> && !std::is_const_v<T> && !std::is_array_v<T>,
                 "iecoop: an ARRAY's elements are variables; for ARRAY OF ARRAY write ARRAY<ARRAY<T, 1, 3>, 1, 2>");
+  static_assert((detail::require_st_start<T>(), true));  // its own static_assert says what is wrong
 
  public:
   using value_type = T;
@@ -323,15 +369,73 @@ struct basic_array {
   }
 
   /// The elements in memory order (row by row), for C APIs and range-for.
-  [[nodiscard]] constexpr T* data() noexcept { return elements_; }
-  [[nodiscard]] constexpr const T* data() const noexcept { return elements_; }
+  [[nodiscard]] constexpr T* data() noexcept { return &elements_[0]; }
+  [[nodiscard]] constexpr const T* data() const noexcept { return &elements_[0]; }
   [[nodiscard]] static constexpr std::size_t size() noexcept { return element_count; }
-  [[nodiscard]] constexpr T* begin() noexcept { return elements_; }
-  [[nodiscard]] constexpr T* end() noexcept { return elements_ + element_count; }
-  [[nodiscard]] constexpr const T* begin() const noexcept { return elements_; }
-  [[nodiscard]] constexpr const T* end() const noexcept { return elements_ + element_count; }
+  [[nodiscard]] constexpr T* begin() noexcept { return data(); }
+  [[nodiscard]] constexpr T* end() noexcept { return data() + element_count; }
+  [[nodiscard]] constexpr const T* begin() const noexcept { return data(); }
+  [[nodiscard]] constexpr const T* end() const noexcept { return data() + element_count; }
 
-  T elements_[element_count]{};  // public only to make the ARRAY an aggregate
+  // Each check is in the operator itself, so that the caller's line comes early in the
+  // compiler's report (every function between adds a note).
+
+  /// `a = b` as the test libraries of ST compare ARRAYs (TcUnit's AssertArrayEquals): TRUE if
+  /// each element equals the one at the same index. Only ARRAYs of one element type and the
+  /// same bounds compare; the elements compare with their own `=`.
+  [[nodiscard]] friend constexpr BOOL operator==(const basic_array& a, const basic_array& b) {
+    static_assert(detail::comparable_element<T>,
+                  "iecoop: ARRAYs compare element by element, and these elements have no = (a function block, or a "
+                  "STRUCT without operator==); compare the members you mean, or give the STRUCT "
+                  "`bool operator==(const ST_X&) const = default;`");
+    if constexpr (detail::comparable_element<T>) {
+      return BOOL(detail::equal_elements(a.data(), b.data(), element_count));
+    } else {
+      return FALSE;
+    }
+  }
+  [[nodiscard]] friend constexpr BOOL operator!=(const basic_array& a, const basic_array& b) {
+    static_assert(detail::comparable_element<T>,
+                  "iecoop: ARRAYs compare element by element, and these elements have no = (a function block, or a "
+                  "STRUCT without operator==); compare the members you mean, or give the STRUCT "
+                  "`bool operator==(const ST_X&) const = default;`");
+    if constexpr (detail::comparable_element<T>) {
+      return BOOL(!detail::equal_elements(a.data(), b.data(), element_count));
+    } else {
+      return TRUE;
+    }
+  }
+  /// An ARRAY of other bounds or another element type: refused, as ST would not compare them.
+  /// One that differs only in its index check compares as one of this type (yielding a C++
+  /// bool, so that C++ rewrites `a != b` as `!(a == b)` with this one function).
+  template <array_check C, class U, auto... B>
+    requires(!std::is_same_v<basic_array<C, U, B...>, basic_array>)
+  [[nodiscard]] friend constexpr bool operator==(const basic_array& a, const basic_array<C, U, B...>& b) {
+    if constexpr (!std::is_same_v<U, T>) {
+      static_assert(detail::dependent_false<U>,
+                    "iecoop: an ARRAY compares only with an ARRAY of the same element type (ST assigns no ARRAY OF INT "
+                    "to an ARRAY OF DINT either); declare both with one element type");
+      return false;
+    } else if constexpr (!detail::same_bounds<shape, detail::array_shape<B...>>()) {
+      static_assert(detail::dependent_false<U>,
+                    "iecoop: an ARRAY compares only with an ARRAY of the same bounds, index by index; declare the "
+                    "other with these bounds (ARRAY<INT, 1, 3> for ARRAY[1..3] OF INT), or compare in a FOR loop");
+      return false;
+    } else {
+      static_assert(detail::comparable_element<T>,
+                    "iecoop: ARRAYs compare element by element, and these elements have no = (a function block, or a "
+                    "STRUCT without operator==); compare the members you mean, or give the STRUCT "
+                    "`bool operator==(const ST_X&) const = default;`");
+      if constexpr (detail::comparable_element<T>) {
+        return detail::equal_elements(a.data(), b.data(), element_count);
+      } else {
+        return false;
+      }
+    }
+  }
+
+  // Public only to make the ARRAY an aggregate; each element starts at its type's initial value.
+  detail::array_elements<T, element_count> elements_{};
 
  private:
   template <class... I>

@@ -20,6 +20,12 @@
 //   STRING <-> WSTRING   Latin-1 <-> UCS-2; characters above 255 become '?'
 //   enumeration -> x     its base type's value (TO_INT(eState)); -> STRING: the value ('10'), or
 //                        with {attribute 'to_string'} (enum_to_string) the component's name ('Run')
+//
+// Every form of a variable converts as its value: a block's var<>, retain<>, a property (read
+// through its Get), a located variable, an in-out or REFERENCE, a method's output<> and temp<>,
+// a subrange (as its base type), a bit `x.N` (a BOOL); so do an ARRAY's element and a STRUCT's
+// member, which are values of their type. An ARRAY, a STRUCT or a block instance as a whole
+// does not convert, as in ST.
 #pragma once
 
 #include <cstddef>
@@ -31,6 +37,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/float_to_int.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -50,7 +57,18 @@ concept AnyElementary =
 
 namespace detail {
 
-/// The IEC type a C++ value stands for when it is passed to a TO_<B> conversion.
+/// What a conversion takes, once a variable wrapper is unwrapped (argument_t): an elementary
+/// value, an intermediate result, an enumeration, or a C++ number or bool.
+template <class T>
+concept conversion_value = AnyElementary<T> || Intermediate<T> || std::is_enum_v<T> || std::is_same_v<T, bool> ||
+                           std::is_floating_point_v<T> || cpp_integer<T>;
+
+/// A class that declares iecoop_value_wrapper but is no value wrapper: a property only its block
+/// reads, which converts (inside its block) to From as before, through its own conversion.
+template <class X>
+concept opted_out_wrapper = !value_wrapper<X> && requires { typename std::remove_cvref_t<X>::iecoop_value_wrapper; };
+
+/// The IEC type a value (a conversion_value) stands for when it is converted.
 template <class T>
 constexpr auto as_elementary(const T& x) noexcept {
   if constexpr (AnyElementary<T>) {
@@ -71,18 +89,16 @@ constexpr auto as_elementary(const T& x) noexcept {
     return LINT(static_cast<std::int64_t>(x));
   } else if constexpr (cpp_integer<T>) {
     return ULINT(static_cast<std::uint64_t>(x));
-  } else if constexpr (std::is_enum_v<T>) {
-    // An enumeration converts as its base type's value.
+  } else {
+    // An enumeration (convert has checked that T is a conversion_value) converts as its base
+    // type's value.
+    static_assert(std::is_enum_v<T>);
     require_enumeration<T>();
     if constexpr (Enumeration<T>) {
       return enum_base_t<T>(x);
     } else {
       return INT();
     }
-  } else {
-    static_assert(dependent_false<T>,
-                  "iecoop: no IEC conversion from this type; convert it to an IEC elementary type first");
-    return x;
   }
 }
 
@@ -188,17 +204,14 @@ constexpr ToChar convert_char(FromChar c) noexcept {
 
 }  // namespace detail
 
-/**
- * Converts an IEC value to the IEC type `To` with IEC (CODESYS) semantics; the rules are
- * listed at the top of this header. This is what every <A>_TO_<B> and TO_<B> calls.
- *
- *     convert<INT>(REAL(2.5))      // 3
- *     convert<STRING<>>(T#1s500ms) // 'T#1s500ms'
- */
 template <class To, class From>
-[[nodiscard]] constexpr To convert(const From& from) noexcept {
-  static_assert(AnyElementary<To>,
-                "iecoop: convert<To>: To must be an IEC elementary type (BOOL, INT, REAL, TIME, STRING<N>, ...)");
+[[nodiscard]] constexpr To convert(From&& from) noexcept(!detail::value_wrapper<From>);
+
+namespace detail {
+
+/// convert<To> of a value that is no wrapper (checked by convert).
+template <class To, class From>
+constexpr To convert_value(const From& from) noexcept {
   if constexpr (AnyString<To> && Enumeration<From> && enum_to_string<From>) {
     // {attribute 'to_string'}: a component's name; a value that is no component as its number.
     detail::require_components<From>();
@@ -285,6 +298,59 @@ template <class To, class From>
   }
 }
 
+}  // namespace detail
+
+/**
+ * Converts an IEC value to the IEC type `To` with IEC (CODESYS) semantics; the rules are
+ * listed at the top of this header. This is what every <A>_TO_<B> and TO_<B> calls. A variable
+ * of any form (a block's var<>, a property, a located variable, an in-out, a subrange) converts
+ * as its value.
+ *
+ *     convert<INT>(REAL(2.5))      // 3
+ *     convert<STRING<>>(T#1s500ms) // 'T#1s500ms'
+ */
+template <class To, class From>
+[[nodiscard]] constexpr To convert(From&& from) noexcept(!detail::value_wrapper<From>) {
+  static_assert(AnyElementary<To>,
+                "iecoop: convert<To>: To must be an IEC elementary type (BOOL, INT, REAL, TIME, STRING<N>, ...)");
+  if constexpr (detail::opted_out_wrapper<From>) {
+    // Here, in the function the user called, so that the compilers show the user's line first.
+    static_assert(
+        detail::dependent_false<From>,
+        "iecoop: this property's Get is for its own block only (owner_only_get), where it is read with .get(): "
+        "write TO_LREAL(Gain.get()) inside the block");
+    return To{};
+  } else if constexpr (!detail::conversion_value<detail::argument_t<From>>) {
+    static_assert(
+        detail::dependent_false<detail::argument_t<From>>,
+        "iecoop: a conversion (TO_<type>, <A>_TO_<B>, convert<T>) takes an elementary value (BOOL, an integer, "
+        "REAL, TIME, a date, STRING, an enumeration) or a variable of one, and this argument (its type is in "
+        "the brackets) is none; ST converts no ARRAY, STRUCT or block instance either: convert an element or a "
+        "member, e.g. TO_LREAL(aValues[i]) or TO_LREAL(stPos.x)");
+    return To{};
+  } else if constexpr (detail::value_wrapper<From>) {
+    return detail::convert_value<To>(detail::argument_value(std::forward<From>(from)));
+  } else {
+    return detail::convert_value<To>(from);
+  }
+}
+
+namespace detail {
+
+/// What the named conversion <From>_TO_<To> takes, a wrapper unwrapped: a From, a value that
+/// converts to From implicitly (a narrower integer, a literal), or an intermediate result of
+/// From or of a type narrower than From (converted from its whole register).
+template <class From, class A>
+concept conversion_source = std::is_convertible_v<const A&, From> ||
+                            (AnyInteger<From> && Intermediate<A> && widens_implicitly<typename A::nominal_type, From>);
+
+/// A C++ array of characters: a string literal, taken by TO_<B>'s literal overload.
+template <class X>
+concept char_array = std::is_array_v<std::remove_cvref_t<X>> &&
+                     is_char_v<std::remove_cv_t<std::remove_extent_t<std::remove_cvref_t<X>>>>;
+
+}  // namespace detail
+
 /// The function object behind a named conversion <From>_TO_<To>: takes a From (or what
 /// converts to it implicitly, such as a literal) and returns convert<To>(x).
 template <class From, class To>
@@ -298,8 +364,41 @@ struct conversion {
   constexpr To operator()(intermediate<N> x) const noexcept {
     return convert<To>(x);
   }
+  /// A variable of any form whose value is a From or widens into one (a block's var<>, a
+  /// property, a located variable, an in-out, a method's output<> or temp<>, a subrange): its
+  /// value, read once (a property through its Get).
+  template <class X>
+    requires(detail::value_wrapper<X> && detail::conversion_source<From, detail::argument_t<X>>)
+  constexpr To operator()(X&& x) const {
+    return (*this)(detail::argument_value(std::forward<X>(x)));
+  }
+  /// Anything else: a value of another IEC type (INT_TO_REAL of a DINT) or no elementary value
+  /// (an ARRAY, a STRUCT, a block instance), rejected with what to write instead.
+  template <class X>
+    requires(!detail::conversion_source<From, detail::argument_t<X>> && !detail::opted_out_wrapper<X>)
+  constexpr To operator()(X&&) const noexcept {
+    using A = detail::argument_t<X>;
+    if constexpr (!detail::conversion_value<A>) {
+      static_assert(
+          detail::dependent_false<A>,
+          "iecoop: a conversion (TO_<type>, <A>_TO_<B>, convert<T>) takes an elementary value (BOOL, an integer, "
+          "REAL, TIME, a date, STRING, an enumeration) or a variable of one, and this argument (its type is in "
+          "the brackets) is none; ST converts no ARRAY, STRUCT or block instance either: convert an element or a "
+          "member, e.g. TO_LREAL(aValues[i]) or TO_LREAL(stPos.x)");
+    } else {
+      // The argument's IEC name where it has one (a STRING, a C++ number: its type).
+      using argument = std::conditional_t<detail::iec_name<detail::nominal_t<A>>::value.empty(), A,
+                                          detail::spelled_iec_name_t<detail::nominal_t<A>>>;
+      static_assert(detail::dependent_false<argument, detail::spelled_iec_name_t<From>>,
+                    "iecoop: <A>_TO_<B> takes an A, or a type that widens into A implicitly, and this argument's type "
+                    "(the first in the brackets) is not the conversion's source type (the second); write the "
+                    "conversion named after the argument's type (e.g. DINT_TO_REAL for a DINT), or TO_<B>(x)");
+    }
+    return To{};
+  }
 };
-/// STRING_TO_<To> and WSTRING_TO_<To> take strings of any capacity and literals.
+/// STRING_TO_<To> and WSTRING_TO_<To> take strings of any capacity, literals, and variables of
+/// any form that hold such a string.
 template <class C, std::size_t N, class To>
 struct conversion<iec_string<C, N>, To> {
   template <std::size_t M>
@@ -310,15 +409,38 @@ struct conversion<iec_string<C, N>, To> {
   constexpr To operator()(const C (&literal)[M]) const noexcept {
     return convert<To>(iec_string<C, M>(literal));
   }
+  template <class W>
+    requires(detail::value_wrapper<W> && AnyString<detail::argument_t<W>> &&
+             std::is_same_v<typename detail::argument_t<W>::char_type, C>)
+  constexpr To operator()(W&& x) const {
+    return convert<To>(std::forward<W>(x));
+  }
 };
 
-/// The function object behind the overloaded conversion TO_<To> (IEC 3rd edition):
-/// takes any elementary value.
+/// The function object behind the overloaded conversion TO_<To> (IEC 3rd edition): takes any
+/// elementary value, and a variable of any form holding one.
 template <class To>
 struct to_type {
   template <class From>
-  constexpr To operator()(const From& x) const noexcept {
-    return convert<To>(x);
+    requires(!detail::char_array<From>)
+  constexpr To operator()(From&& x) const noexcept(!detail::value_wrapper<From>) {
+    if constexpr (detail::opted_out_wrapper<From>) {
+      static_assert(
+          detail::dependent_false<From>,
+          "iecoop: this property's Get is for its own block only (owner_only_get), where it is read with .get(): "
+          "write TO_LREAL(Gain.get()) inside the block");
+      return To{};
+    } else if constexpr (!detail::conversion_value<detail::argument_t<From>>) {
+      static_assert(
+          detail::dependent_false<detail::argument_t<From>>,
+          "iecoop: a conversion (TO_<type>, <A>_TO_<B>, convert<T>) takes an elementary value (BOOL, an integer, "
+          "REAL, TIME, a date, STRING, an enumeration) or a variable of one, and this argument (its type is in "
+          "the brackets) is none; ST converts no ARRAY, STRUCT or block instance either: convert an element or a "
+          "member, e.g. TO_LREAL(aValues[i]) or TO_LREAL(stPos.x)");
+      return To{};
+    } else {
+      return convert<To>(detail::argument_value(std::forward<From>(x)));
+    }
   }
   template <class C, std::size_t M>
     requires detail::is_char_v<C>

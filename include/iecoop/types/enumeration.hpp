@@ -11,6 +11,7 @@
 //     END_TYPE
 //     {attribute 'strict'}                       template <> inline constexpr bool iecoop::enum_strict<E_Mode> = true;
 //     {attribute 'to_string'}                    template <> inline constexpr bool iecoop::enum_to_string<E_Mode> = true;
+//     TYPE E_Valve : (Open, Closed) := Closed;   template <> inline constexpr E_Valve iecoop::enum_initial<E_Valve> = Closed;
 //     (the names, for TO_STRING, printing,       template <> inline constexpr auto iecoop::enum_components<E_Mode> =
 //      is_component and parse_enum)                  iecoop::components<E_Mode::Off, E_Mode::Manual, E_Mode::Auto>{};
 // clang-format on
@@ -22,6 +23,10 @@
 //   'strict' too); a number becomes an enumeration only through to_enum<E>(x), which 'strict'
 //   rejects. Without 'strict', arithmetic on components computes in the base type, as in ST;
 //   with 'strict' it does not compile.
+// * A variable without an initial value starts at the type's initial value (enum_initial), else
+//   at the first component, whatever its value (`(a := 5, b)` starts at 5): iecoop's variables
+//   (var<E>, temp<E>, ARRAY elements, ...: detail/initial_value.hpp) read it from enum_components,
+//   whose first listed component is the first declared; a plain `E e;` needs `= E::A` written.
 // * The component names are not reflected over a range of values: `components<...>` lists the
 //   components, each listed value's name is read from the compiler's spelling of it, and the
 //   list is checked against the enumerators next to it (docs/design.md, "Enumeration names are
@@ -384,6 +389,22 @@ struct no_components {};
 template <class E>
 inline constexpr no_components enum_components{};
 
+/// No initial value declared for the type (what enum_initial<E> is unless it is specialised).
+struct no_initial {};
+
+/**
+ * The type's initial value, ST's `TYPE E_State : (Idle, Run, Fault) := Run; END_TYPE`: what a
+ * variable of E starts at where its declaration gives none. Declare it once, after the
+ * enumeration:
+ *
+ *     template <> inline constexpr E_State iecoop::enum_initial<E_State> = Run;
+ *
+ * Without it such a variable starts at E's first component, the first of enum_components<E>
+ * (CODESYS: "initialization is automatically performed with the top member").
+ */
+template <class E>
+inline constexpr no_initial enum_initial{};
+
 namespace detail {
 
 /// The IEC base type of an IEC enumeration, for integer<>'s conversion (types/elementary.hpp).
@@ -422,6 +443,49 @@ constexpr long long component_index(E e) noexcept {
     if (list::values[i] == e) return static_cast<long long>(i);
   }
   return -1;
+}
+
+}  // namespace detail
+
+namespace detail {
+
+template <class E>
+inline constexpr bool has_initial = !std::is_same_v<std::remove_cv_t<decltype(enum_initial<E>)>, no_initial>;
+
+/// What a variable of E starts at is known: E's initial value or its components are declared.
+template <class E>
+inline constexpr bool knows_enum_start = has_initial<E> || has_components<E>;
+
+template <class Enum>
+constexpr void enum_start_unknown() {
+  static_assert(knows_enum_start<Enum>,
+                "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
+                "from the enumeration's declared components (the enumeration is `Enum`); declare them, first component "
+                "first: template <> inline constexpr auto iecoop::enum_components<E> = iecoop::components<E::A, "
+                "E::B>{}; (or the type's initial value, enum_initial<E>), or give the variable its initial value");
+}
+
+/// ST's initial value of a variable of the enumeration E declared without one: E's declared
+/// initial value (enum_initial<E>), else its first component (enum_components<E>).
+template <class E>
+constexpr E enum_start() noexcept {
+  if constexpr (has_initial<E>) {
+    if constexpr (std::is_same_v<std::remove_cv_t<decltype(enum_initial<E>)>, E>) {
+      return enum_initial<E>;
+    } else {
+      static_assert(dependent_false<E>,
+                    "iecoop: enum_initial<E> is one of E's components; declare it as "
+                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+      return E{};
+    }
+  } else if constexpr (has_components<E>) {
+    static_assert(std::is_same_v<typename components_of<E>::enum_type, E>,
+                  "iecoop: enum_components<E> lists the components of another enumeration; list E's");
+    return components_of<E>::values[0];
+  } else {
+    enum_start_unknown<E>();
+    return E{};
+  }
 }
 
 }  // namespace detail

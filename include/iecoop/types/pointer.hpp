@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -127,8 +128,8 @@ class POINTER_TO {
     fault(fault_kind::null_pointer, "POINTER dereferenced while it is 0; a stand-in variable is used");
     using V = std::remove_const_t<T>;
     if constexpr (std::is_default_constructible_v<V> && std::is_copy_assignable_v<V>) {
-      static V stand_in = V();
-      stand_in = V();
+      static V stand_in = detail::stand_in_value<V>();
+      stand_in = detail::stand_in_value<V>();
       return stand_in;
     } else {
       std::abort();  // no stand-in can be made for this type (an abstract block)
