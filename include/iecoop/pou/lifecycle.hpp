@@ -65,7 +65,7 @@ void run_fb_init(B& block, P&&... params_then_initial_values) {
     if (detail::current_lifecycle.init_suppressed) return;  // a probe of the layout, no instance
     block_access::fb_init(block, BOOL(detail::current_lifecycle.init_retains),
                           BOOL(detail::current_lifecycle.in_copy_code), std::get<I>(std::move(arguments))...);
-    block.with(std::get<params + J>(std::move(arguments))...);
+    detail::assign_initial_values(block, std::get<params + J>(std::move(arguments))...);
   }(std::make_index_sequence<params>{}, std::make_index_sequence<named>{});
 }
 
