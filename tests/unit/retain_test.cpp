@@ -383,17 +383,33 @@ TEST_SUITE("retain") {
     check_persistent_kept(machine);
   }
 
-  TEST_CASE("lifecycle reset with FB_Init: the values come back after FB_Init ran") {
+  TEST_CASE("lifecycle reset with FB_Init: the kept value is in place when FB_Init runs") {
     FB_WithInit block;
     block.iKept = 77;
     const retained_object objects[] = {object_of(block)};
     const std::size_t size = detail::save_retained(objects, retain_kinds::both, image_buffer);
-    reset(block, reset_kind::warm);
-    CHECK(block.bSeenInitRetains == FALSE);
-    CHECK(block.iSeen == 1);  // FB_Init sees the initial value (docs/retain.md)
-    CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(image_buffer).first(size)) ==
-          retain_kinds::both);
-    CHECK(block.iKept == 77);
+    const std::span<const std::byte> saved = std::span(image_buffer).first(size);
+    SUBCASE("warm: restored as the variables are constructed, FB_Init sees the kept value") {
+      const detail::retained_restore_session restoring(objects, retain_kinds::both, saved);
+      reset(block, reset_kind::warm);
+      CHECK(restoring.finish() == retain_kinds::both);
+      CHECK(block.bSeenInitRetains == FALSE);
+      CHECK(block.iSeen == 77);  // as in CODESYS (docs/retain.md, "Start-up order")
+      CHECK(block.iKept == 77);
+    }
+    SUBCASE("cold: RETAIN not kept, FB_Init sees the initial value") {
+      const detail::retained_restore_session restoring(objects, kept_over(retain_event::cold_reset), saved);
+      reset(block, reset_kind::cold);
+      CHECK(block.bSeenInitRetains == TRUE);
+      CHECK(block.iSeen == 1);
+      CHECK(block.iKept == 1);
+    }
+    SUBCASE("without a session: the values come back only with a restore after construction") {
+      reset(block, reset_kind::warm);
+      CHECK(block.iSeen == 1);
+      CHECK(detail::restore_retained(objects, retain_kinds::both, saved) == retain_kinds::both);
+      CHECK(block.iKept == 77);
+    }
   }
 
   TEST_CASE("a RETAIN section whose layout changed is skipped, the PERSISTENT one is still restored") {

@@ -4,6 +4,8 @@
 // IWYU pragma: private, include <iecoop/pou/lifecycle.hpp>
 #pragma once
 
+#include <cstddef>
+
 #include <iecoop/detail/construction.hpp>
 
 namespace iecoop::detail {
@@ -19,6 +21,12 @@ struct lifecycle_flags {
 /// The flags of the operation under way. Lifecycle operations are not thread-safe: run them
 /// while no task runs.
 inline lifecycle_flags current_lifecycle{};
+
+/// Set while instances are constructed with their RETAIN/PERSISTENT values restored at
+/// construction (detail::retained_restore_session): TRUE if the variable at [address,
+/// address + size) is a remanent variable that got its kept value. run_fb_init leaves such a
+/// variable out of the named initial values: a kept value is not initialised again.
+inline bool (*kept_at_construction)(const void* address, std::size_t size) noexcept = nullptr;
 
 /// Sets the flags for the duration of a scope. At its end, a derived block constructed in it
 /// whose constructor did not run its bases' FB_Init is reported (detail/construction.hpp).

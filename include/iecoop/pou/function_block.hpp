@@ -30,6 +30,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/initial_value.hpp>
+#include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
@@ -443,6 +444,32 @@ constexpr B& assign_inputs(B& block, A&&... arguments) {
     static_assert(distinct_names<A...>(), "iecoop: a call names the same variable twice; name each variable once");
   }
   return block;
+}
+
+/// One named initial value of an instance declaration: as apply_input, except that an input
+/// whose kept value a restore gave it at its construction keeps that value (bInitRetains
+/// FALSE: the remanent variables are not initialised).
+template <class B, NamedInput A>
+constexpr void apply_initial_value(B& block, A&& argument) {
+  using arg = std::remove_cvref_t<A>;
+  constexpr std::size_t input = inputs_of<B>::index_of(arg::name);
+  if constexpr (input < inputs_of<B>::size) {
+    const auto& field = block.*pin<inputs_of<B>, input>;
+    if (kept_at_construction != nullptr && kept_at_construction(&field, sizeof field)) return;
+  }
+  apply_input(block, std::forward<A>(argument));
+}
+
+/// The named initial values of an instance declaration, assigned after FB_Init (run_fb_init):
+/// as with(), but a RETAIN or PERSISTENT input restored at its construction keeps its value.
+template <class B, NamedInput... A>
+constexpr B& assign_initial_values(B& block, A&&... arguments) {
+  if constexpr (((known_name<B, A>() && ...) && distinct_names<A...>())) {
+    (apply_initial_value(block, std::forward<A>(arguments)), ...);
+    return block;
+  } else {
+    return assign_inputs(block, std::forward<A>(arguments)...);  // its diagnostics
+  }
 }
 
 /// The two ways to call a block `Self`, and with(): what function_block<> and extends<> add.

@@ -379,7 +379,7 @@ void run_fb_init(B& block, P&&... params_then_initial_values) {
     detail::run_fb_init_levels<B, B, decltype(arguments), P...>(
         block, BOOL(detail::current_lifecycle.init_retains), BOOL(detail::current_lifecycle.in_copy_code), arguments);
     [&]<std::size_t... J>(std::index_sequence<J...>) {
-      block.with(std::get<J>(std::move(arguments))...);
+      detail::assign_initial_values(block, std::get<J>(std::move(arguments))...);
     }(detail::selected_sequence<detail::is_initial_value<B, P...>>{});
   }
 }

@@ -106,20 +106,21 @@ class application {
   /**
    * Starts the tasks. If the instances do not exist yet (first start, or after stop()), they
    * are constructed first, and the retained values are restored (`mode` says which): from the
-   * retain memory, which holds this application's last stop(), else from the attached
-   * storage. An image from the storage is checked before any instance exists — intact,
-   * saved by the same variables, every value one of its type (retain_status() tells what was
-   * found) — so that FB_Init gets bInitRetains = FALSE exactly when the RETAIN values are
-   * restored. A damaged image is replaced by the storage's previous one if it has one
-   * (load_previous()); a rejected image is moved aside (set_aside()) so that no save
-   * overwrites it. After a reset, start() continues with the existing instances; cyclic and
-   * freewheeling tasks are released from now() on. On a running application it does nothing.
-   * Returns FALSE in the exception state (reset first), and if the RETAIN and PERSISTENT
-   * variables need more than the retain memory (a fault of kind invalid_value; the
-   * application stays stopped: give it retain_capacity<N>{} with the N the fault names).
-   * Returns FALSE too, before anything else, while the connected I/O driver reports a
-   * configuration error (an io_chain of two drivers that write the same input bits: a fault of
-   * kind invalid_value with its message, which names them).
+   * retain memory, which holds this application's last stop(), else from the attached storage.
+   * The image is checked before any instance exists — intact, saved by the same variables,
+   * every value one of its type (retain_status() tells what was found) — so that FB_Init gets
+   * bInitRetains = FALSE exactly when the RETAIN values are restored, and each remanent
+   * variable takes its kept value as it is constructed: FB_Init sees the kept values, as in
+   * CODESYS (docs/retain.md, "Start-up order"). A damaged image is replaced by the storage's
+   * previous one if it has one (load_previous()); a rejected image is moved aside (set_aside())
+   * so that no save overwrites it. After a reset, start() continues with the existing
+   * instances; cyclic and freewheeling tasks are released from now() on. On a running
+   * application it does nothing. Returns FALSE in the exception state (reset first), and if the
+   * RETAIN and PERSISTENT variables need more than the retain memory (a fault of kind
+   * invalid_value; the application stays stopped: give it retain_capacity<N>{} with the N the
+   * fault names). Returns FALSE too, before anything else, while the connected I/O driver
+   * reports a configuration error (an io_chain of two drivers that write the same input bits:
+   * a fault of kind invalid_value with its message, which names them).
    */
   bool start(start_mode mode = start_mode::restart) {
     if (scheduler_.state() == scheduler_state::exception) return false;
@@ -140,6 +141,9 @@ class application {
     if (!constructed_) return;
     const std::size_t size = save(retain_kinds::both);
     retain_size_ = size;
+    own_verdict_ = size > 0 ? detail::check_retained(store_.objects(), retain_kinds::both, retained_image(size))
+                            : detail::retained_verdict::nothing_found(retain_kinds::both);
+    own_order_ = detail::retained_in_construction_order(store_.objects(), retain_kinds::both);
     const bool saved = size == 0 || storage_.object == nullptr ||
                        storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size));
     destroy();
@@ -152,11 +156,12 @@ class application {
   }
 
   /**
-   * Resets the application as CODESYS's Reset warm / cold / origin: FB_Exit of every
-   * instance, then FB_Init (bInitRetains = FALSE for warm, TRUE otherwise); a warm reset
-   * keeps RETAIN and PERSISTENT values, a cold one PERSISTENT values, origin none. The
-   * process image is cleared, the task statistics start afresh, an exception is cleared,
-   * and the application is halted: start() runs the tasks again. Does nothing when stopped.
+   * Resets the application as CODESYS's Reset warm / cold / origin: FB_Exit of every instance,
+   * then FB_Init (bInitRetains = FALSE for warm, TRUE otherwise); a warm reset keeps RETAIN and
+   * PERSISTENT values, a cold one PERSISTENT values, origin none. The kept values are in place
+   * when FB_Init runs (each variable takes its value as it is constructed). The process image
+   * is cleared, the task statistics start afresh, an exception is cleared, and the application
+   * is halted: start() runs the tasks again. Does nothing when stopped.
    */
   void reset(reset_kind kind) {
     if (!constructed_) return;
@@ -164,13 +169,19 @@ class application {
                                         : kind == reset_kind::cold ? retain_event::cold_reset
                                                                    : retain_event::origin_reset);
     const std::size_t size = save(keep);
+    // What the reset keeps, checked on the instances that wrote it, and whether they were
+    // constructed in the image's order (then their next construction takes the values).
+    detail::retained_verdict verdict = size > 0 ? detail::check_retained(store_.objects(), keep, retained_image(size))
+                                                : detail::retained_verdict::nothing_found(keep);
+    for (const retain_kind k : {retain_kind::retain, retain_kind::persistent}) {
+      if (size == 0) verdict[k] = keep.contains(k) ? retain_load::restored : retain_load::not_kept;
+    }
+    const retain_kinds ordered = detail::retained_in_construction_order(store_.objects(), keep);
     destroy();
     iecoop::retain_status status;
-    status.retain = keep.contains(retain_kind::retain) ? retain_load::restored : retain_load::not_kept;
-    status.persistent = keep.contains(retain_kind::persistent) ? retain_load::restored : retain_load::not_kept;
-    publish(status);
-    construct(kind != reset_kind::warm);
-    if (size > 0) restore(keep, size);
+    status.retain = verdict.retain;
+    status.persistent = verdict.persistent;
+    construct_restoring(!verdict.restorable().contains(retain_kind::retain), verdict, ordered, size, status);
     scheduler_.restart();
   }
 
@@ -352,48 +363,105 @@ class application {
     const retain_kinds wanted = kept_over(mode == start_mode::restart ? retain_event::restart : retain_event::download);
     iecoop::retain_status status;
     detail::retained_verdict verdict = detail::retained_verdict::nothing_found(wanted);
+    retain_kinds ordered;
     std::size_t size = 0;
-    bool own = false;  // the image is this application's own last stop(): its layout is the current one
     if constexpr (retain_bytes > 0) {
       if (retain_size_ > 0) {
+        // This application's own last stop(): checked then, on the variables that wrote it.
         size = retain_size_;
-        own = true;
+        for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+          if (wanted.contains(kind)) verdict[kind] = own_verdict_[kind];
+        }
+        ordered = own_order_;
       } else if (storage_.object != nullptr) {
-        size = read_storage(wanted, verdict, status);
+        size = read_storage(wanted, verdict, status, ordered);
       }
     }
     status.retain = verdict.retain;
     status.persistent = verdict.persistent;
-    // bInitRetains = FALSE where the RETAIN values will be restored: for an image of this
-    // application, where it has them; for one from the storage, where the probe found them usable.
-    const bool init_retains =
-        own ? !wanted.contains(retain_kind::retain) : !verdict.restorable().contains(retain_kind::retain);
-    publish(status);
-    construct(init_retains);
+    // bInitRetains = FALSE where the RETAIN values are restored, checked before FB_Init runs.
+    construct_restoring(!verdict.restorable().contains(retain_kind::retain), verdict, ordered, size, status);
     if (!retain_fits()) return false;
-    if constexpr (retain_bytes > 0) {
-      if (size > 0) {
-        const auto objects = store_.objects();
-        const std::span<const std::byte> stored(retain_memory_.data(), size);
-        const detail::retained_verdict found = own ? detail::check_retained(objects, wanted, stored) : verdict;
-        (void)detail::restore_checked(objects, found, stored);
-        if (own) {
-          status.retain = found.retain;
-          status.persistent = found.persistent;
-          publish(status);
-        }
-      }
-    }
     retain_size_ = 0;
     scheduler_.restart();
     return true;
   }
 
+  /**
+   * Constructs the instances (FB_Init with bInitRetains = `init_retains`) and restores the
+   * kinds `verdict` found restorable in the first `size` bytes of the retain memory: for the
+   * kinds in `ordered`, each variable as it is constructed, so that FB_Init sees the kept
+   * values (CODESYS's order); for the others, after the construction (status
+   * restored_after_init). Publishes `status` before FB_Init runs. If the construction turns
+   * out to differ from the one the image was checked against (a constructor that makes its
+   * remanent variables differently each time), the instances are ended and built again
+   * without the values of that kind (status `changed`, a fault of kind invalid_value).
+   */
+  void construct_restoring(bool init_retains, detail::retained_verdict verdict, retain_kinds ordered, std::size_t size,
+                           iecoop::retain_status status) {
+    const auto objects = store_.objects();
+    const std::span<const std::byte> stored = retained_image(size);
+    const retain_kinds restorable = size > 0 ? verdict.restorable() : retain_kinds::none;
+    const retain_kinds early = restorable & ordered;
+    retain_kinds late = without(restorable, early);
+    status.restored_after_init = !late.empty();
+    publish(status);
+    retain_kinds failed;
+    {
+      const detail::retained_restore_session restoring(objects, early, stored);
+      construct(init_retains);
+      failed = without(restoring.kinds(), restoring.finish());
+    }
+    if (!failed.empty()) {
+      destroy();
+      for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+        if (failed.contains(kind)) verdict[kind] = retain_load::changed;
+      }
+      late = late | without(early, failed);
+      status.retain = verdict.retain;
+      status.persistent = verdict.persistent;
+      status.restored_after_init = !late.empty();
+      publish(status);
+      construct(init_retains || failed.contains(retain_kind::retain));
+    }
+    if (!late.empty()) {
+      // Checked again on the instances as they are now, then restored.
+      const detail::retained_verdict found = detail::check_retained(objects, late, stored);
+      (void)detail::restore_checked(objects, found, stored);
+      for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+        if (late.contains(kind) && found[kind] != retain_load::restored) verdict[kind] = found[kind];
+      }
+      status.retain = verdict.retain;
+      status.persistent = verdict.persistent;
+      status.restored_after_init = detail::retained_count(objects, found.restorable()) > 0;
+      publish(status);
+    }
+    if (!failed.empty()) {
+      fault(fault_kind::invalid_value,
+            "the RETAIN/PERSISTENT variables were constructed otherwise than when their values were saved (a "
+            "constructor that makes them differently each time); the instances were built again without those values");
+    }
+  }
+
+  static constexpr retain_kinds without(retain_kinds kinds, retain_kinds removed) noexcept {
+    retain_kinds rest;
+    for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+      if (kinds.contains(kind) && !removed.contains(kind)) rest |= kind;
+    }
+    return rest;
+  }
+
+  [[nodiscard]] std::span<const std::byte> retained_image(std::size_t size) const noexcept {
+    return std::span<const std::byte>(retain_memory_.data(), size);
+  }
+
   /// Reads the storage's image into the retain memory and checks it against the variables of
   /// a probe (the instances constructed without FB_Init, then destroyed without FB_Exit):
-  /// the image's size, and `verdict` for each kind in `wanted`. A damaged image gives way to
+  /// the image's size, `verdict` for each kind in `wanted`, and in `ordered` the kinds whose
+  /// variables the probe constructed in the image's order. A damaged image gives way to
   /// the storage's previous one, if it has an intact one; a rejected image is set aside.
-  std::size_t read_storage(retain_kinds wanted, detail::retained_verdict& verdict, iecoop::retain_status& status) {
+  std::size_t read_storage(retain_kinds wanted, detail::retained_verdict& verdict, iecoop::retain_status& status,
+                           retain_kinds& ordered) {
     const auto mark_all = [&](retain_load load) {
       for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
         if (wanted.contains(kind)) verdict[kind] = load;
@@ -426,6 +494,7 @@ class application {
         store_.construct_all();
         const detail::retained_verdict found =
             detail::check_retained(store_.objects(), wanted, std::span<const std::byte>(retain_memory_.data(), size));
+        ordered = detail::retained_in_construction_order(store_.objects(), wanted);
         store_.destroy_all();
         for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
           if (!wanted.contains(kind)) continue;
@@ -459,15 +528,13 @@ class application {
     if (kinds.empty() || detail::retained_count(objects, kinds) == 0) return 0;
     return detail::save_retained(objects, kinds, retain_memory_);
   }
-  void restore(retain_kinds kinds, std::size_t size) {
-    const auto objects = store_.objects();
-    (void)detail::restore_retained(objects, kinds, std::span<const std::byte>(retain_memory_.data(), size));
-  }
 
   store_type store_;
   scheduler_type scheduler_;  // with the task_cycles, which call the programs in store_
   std::array<std::byte, retain_bytes> retain_memory_{};
   std::size_t retain_size_ = 0;
+  detail::retained_verdict own_verdict_{};  // the image of the last stop(), checked on the variables that wrote it
+  retain_kinds own_order_{};                // the kinds those variables were constructed in the image's order
   std::size_t retain_bytes_needed_ = 0;
   iecoop::retain_status retain_status_{};
   storage_binding storage_{};

@@ -174,6 +174,11 @@ struct retain_status {
   BOOL BootDataLoaded = FALSE;
   /// TwinCAT's `_AppInfo.OldBootData`: they were restored from the image saved before the last.
   BOOL OldBootData = FALSE;
+  /// The restored values came back only after FB_Init had run, so FB_Init saw the initial
+  /// values: the remanent variables were constructed in another order than that of their
+  /// addresses (docs/retain.md, "Start-up order"). FALSE when the values were in place
+  /// before FB_Init, as in CODESYS, and when nothing was restored.
+  bool restored_after_init = false;
 
   /// The status of `kind`.
   [[nodiscard]] constexpr retain_load of(retain_kind kind) const noexcept {
@@ -222,6 +227,17 @@ struct retained_node {
   retained_node* previous = nullptr;
   retained_node* next = nullptr;
 };
+
+/**
+ * A restore under way while instances are constructed (detail::retained_restore_session,
+ * <iecoop/runtime/retain_image.hpp>): every remanent variable constructed while one is set
+ * hands its list entry to `take`, which gives it its kept value, so that the value is in place
+ * before the FB_Init of the block around it runs (as CODESYS has it).
+ */
+struct retained_restore_hook {
+  void (*take)(retained_restore_hook& self, retained_node& node) noexcept = nullptr;
+};
+inline retained_restore_hook* retained_restoring = nullptr;
 
 /// The list, in order of construction. Constant-initialised, so that variables of global
 /// instances may register during dynamic initialisation. Not thread-safe: remanent
@@ -293,6 +309,7 @@ class retained_variable : public assignable_variable<Derived, T> {
     node_.value = &this->storage();
     node_.type = &retained_type_of<T, Kind>;
     link_retained(node_);
+    if (retained_restoring != nullptr) retained_restoring->take(*retained_restoring, node_);
   }
   retained_node node_;
 };

@@ -15,6 +15,7 @@
 #include <span>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/runtime/retain.hpp>
 
@@ -351,6 +352,194 @@ inline retain_kinds restore_checked(std::span<const retained_object> objects, co
   });
   return restored;
 }
+
+// ---------------------------------------------------------------------------------------
+// Restoring while the instances are constructed
+
+/// Where a remanent variable lies: the index of the object it lies in, and its offset there.
+struct retained_place {
+  std::size_t object = 0;
+  std::size_t offset = 0;
+};
+
+/// FALSE if the variable at `node` lies in none of `objects`.
+inline bool retained_place_of(std::span<const retained_object> objects, const retained_node& node,
+                              retained_place& place) noexcept {
+  const std::uintptr_t at = retained_address(node.value);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const std::uintptr_t begin = retained_address(objects[i].base);
+    if (at < begin) continue;
+    const std::size_t offset = static_cast<std::size_t>(at - begin);
+    if (offset < objects[i].size && objects[i].size - offset >= node.type->size) {
+      place = {i, offset};
+      return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * The kinds in `kinds` whose variables in `objects` were constructed in the order in which
+ * save_retained writes them (object by object, each by address), as C++ constructs members,
+ * bases and nested blocks: for those, the next construction of the same instances can take
+ * the values from the image one after the other (retained_restore_session).
+ */
+inline retain_kinds retained_in_construction_order(std::span<const retained_object> objects, retain_kinds kinds) {
+  retain_kinds ordered;
+  for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+    if (!kinds.contains(kind)) continue;
+    bool in_order = true;
+    bool any = false;
+    retained_place last;
+    for (const retained_node* node = retained_first; node != nullptr && in_order; node = node->next) {
+      retained_place place;
+      if (node->type->kind != kind || !retained_place_of(objects, *node, place)) continue;
+      if (any && (place.object < last.object || (place.object == last.object && place.offset <= last.offset))) {
+        in_order = false;
+      }
+      last = place;
+      any = true;
+    }
+    if (in_order) ordered |= kind;
+  }
+  return ordered;
+}
+
+/**
+ * Restores the remanent variables of `objects` as they are constructed, so that each has its
+ * kept value before the FB_Init of the block around it runs — CODESYS's order, where the
+ * retain memory keeps the values and FB_Init(bInitRetains := FALSE) sees them
+ * (docs/retain.md, "Start-up order"). While the session exists, every remanent variable
+ * constructed in one of `objects`, of a kind in `kinds`, takes the next value of that kind's
+ * section of `in`, in the order save_retained wrote them.
+ *
+ * Use it for kinds that check_retained found restorable in `in` (for these very objects, or a
+ * probe of them) and that retained_in_construction_order found in order; `in` must outlive
+ * the session. Each value taken is checked again (within the section, after the one before it
+ * in the image's order, a value of its type); a variable that breaks that, or a construction
+ * that ends with other variables than the image's (count, size, layout hash), makes its kind
+ * fail: finish() leaves it out, and the caller must not trust the values of that kind (the
+ * application ends and rebuilds its instances). Not thread-safe, allocates nothing; sessions
+ * nest (the one before is active again when one ends).
+ */
+class retained_restore_session : private retained_restore_hook {
+ public:
+  retained_restore_session(std::span<const retained_object> objects, retain_kinds kinds,
+                           std::span<const std::byte> in) noexcept
+      : objects_(objects), in_(in), previous_(retained_restoring), previous_kept_(kept_at_construction) {
+    take = &take_value;
+    if (!kinds.empty() && valid_retained_image(in)) {
+      retain_kinds seen;
+      for_each_retained_section(in, [&](retain_kind kind, std::size_t position, const std::byte* header) {
+        if (!kinds.contains(kind) || seen.contains(kind)) return;  // the first section of a kind counts
+        seen |= kind;
+        cursor& c = cursor_of(kind);
+        c.active = true;
+        c.position = position;
+        c.end = position + retained_get(header + 12, 4);
+        c.expected_hash = retained_get(header + 4, 4);
+        c.expected_count = retained_get(header + 8, 4);
+        c.expected_size = retained_get(header + 12, 4);
+        c.hash.add_byte(std::endian::native == std::endian::little ? 1 : 2);
+      });
+    }
+    retained_restoring = this;
+    kept_at_construction = &kept;
+  }
+  ~retained_restore_session() {
+    retained_restoring = previous_;
+    kept_at_construction = previous_kept_;
+  }
+  retained_restore_session(const retained_restore_session&) = delete;
+  retained_restore_session& operator=(const retained_restore_session&) = delete;
+
+  /// The kinds whose every variable got its value at construction, exactly the image's
+  /// variables (count, size, layout hash). Call it when the instances are constructed.
+  [[nodiscard]] retain_kinds finish() const noexcept {
+    retain_kinds restored;
+    for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+      const cursor& c = cursors_[index_of(kind)];
+      if (c.active && !c.failed && c.count == c.expected_count && c.taken_size == c.expected_size &&
+          c.hash.value() == c.expected_hash) {
+        restored |= kind;
+      }
+    }
+    return restored;
+  }
+  /// The kinds the session was to restore (those of `kinds` the image has a section of).
+  [[nodiscard]] retain_kinds kinds() const noexcept {
+    retain_kinds kinds;
+    for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+      if (cursors_[index_of(kind)].active) kinds |= kind;
+    }
+    return kinds;
+  }
+
+ private:
+  struct cursor {
+    bool active = false;
+    bool failed = false;
+    bool any = false;
+    std::size_t position = 0;
+    std::size_t end = 0;
+    retained_place last;
+    std::size_t count = 0;
+    std::size_t taken_size = 0;
+    std::uint32_t expected_hash = 0;
+    std::size_t expected_count = 0;
+    std::size_t expected_size = 0;
+    fnv1a hash;
+  };
+
+  static constexpr std::size_t index_of(retain_kind kind) noexcept { return kind == retain_kind::retain ? 0 : 1; }
+  cursor& cursor_of(retain_kind kind) noexcept { return cursors_[index_of(kind)]; }
+
+  static void take_value(retained_restore_hook& hook, retained_node& node) noexcept {
+    static_cast<retained_restore_session&>(hook).take_one(node);
+  }
+
+  void take_one(retained_node& node) noexcept {
+    cursor& c = cursor_of(node.type->kind);
+    retained_place place;
+    if (!c.active || c.failed || !retained_place_of(objects_, node, place)) return;
+    const bool after =
+        !c.any || place.object > c.last.object || (place.object == c.last.object && place.offset > c.last.offset);
+    const std::size_t size = node.type->size;
+    if (!after || c.end - c.position < size || !node.type->valid(in_.data() + c.position)) {
+      c.failed = true;  // not the image's next variable: the construction differs from the saved one
+      return;
+    }
+    std::memcpy(node.value, in_.data() + c.position, size);
+    c.hash.add_number(place.object).add_number(place.offset).add_number(size).add_number(node.type->type_hash);
+    c.position += size;
+    c.taken_size += size;
+    ++c.count;
+    c.last = place;
+    c.any = true;
+  }
+
+  /// kept_at_construction: a remanent variable of an active kind that got its kept value.
+  static bool kept(const void* address, std::size_t size) noexcept {
+    auto* session = static_cast<retained_restore_session*>(retained_restoring);
+    if (session == nullptr) return false;
+    const std::uintptr_t begin = retained_address(address);
+    for (const retained_node* node = retained_first; node != nullptr; node = node->next) {
+      const std::uintptr_t at = retained_address(node->value);
+      if (at < begin || at - begin >= size) continue;
+      const cursor& c = session->cursor_of(node->type->kind);
+      retained_place place;
+      if (!c.active || c.failed || !c.any || !retained_place_of(session->objects_, *node, place)) return false;
+      return place.object < c.last.object || (place.object == c.last.object && place.offset <= c.last.offset);
+    }
+    return false;
+  }
+
+  std::span<const retained_object> objects_;
+  std::span<const std::byte> in_;
+  retained_restore_hook* previous_;
+  bool (*previous_kept_)(const void*, std::size_t) noexcept;
+  std::array<cursor, 2> cursors_{};
+};
 
 /**
  * Copies values from an image save_retained wrote back into the remanent variables of
