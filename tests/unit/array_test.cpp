@@ -19,6 +19,10 @@ struct ST_Part {
 };
 
 enum E_Axis : std::int16_t { X = 1, Y, Z };
+}  // namespace
+template <>
+inline constexpr auto iecoop::enum_components<E_Axis> = iecoop::components<X, Y, Z>{};
+namespace {
 
 // FUNCTION F_Sum : DINT  VAR_IN_OUT aValues : ARRAY[*] OF INT; END_VAR
 DINT F_Sum(in_out<ARRAY<INT, '*'>> aValues) {
