@@ -44,7 +44,8 @@ enum class fault_kind : std::uint8_t {
 /// as long as the object that reported it: an io_chain's configuration error); `task` and `pou`
 /// name the task whose cycle was running and the program it was calling when the fault
 /// happened (nullptr outside a task cycle, and for a fault of the task itself, such as a
-/// watchdog, `pou`). Both are set by the application's scheduler (fault_context).
+/// watchdog, `pou`). Both are set by the application's scheduler (fault_context). A fault of
+/// kind lifecycle names in `pou` the block it is about (its message is a constant text).
 struct fault_info {
   fault_kind kind;
   const char* message;
@@ -106,6 +107,10 @@ using fault_handler = void (*)(const fault_info&);
       std::fputs(", program ", stderr);
       std::fputs(fault.pou, stderr);
     }
+    std::fputs(")", stderr);
+  } else if (fault.pou != nullptr) {
+    std::fputs(" (", stderr);  // outside a cycle: the block a lifecycle fault is about
+    std::fputs(fault.pou, stderr);
     std::fputs(")", stderr);
   }
   std::fputs("\n", stderr);

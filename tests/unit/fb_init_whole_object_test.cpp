@@ -360,7 +360,8 @@ TEST_SUITE("FB_Init on the whole block") {
       CHECK(calls.empty());  // no level's FB_Init ran: none ran as a part of a half-built block
       REQUIRE(faults.count() == 1);
       CHECK(faults.only(fault_kind::lifecycle));
-      CHECK(std::string(faults.last().message).find("FB_Forgets_Init") != std::string::npos);
+      REQUIRE(faults.last().pou != nullptr);
+      CHECK(std::string(faults.last().pou) == "FB_Forgets_Init");
       CHECK(std::string(faults.last().message).find("run_fb_init") != std::string::npos);
       std::destroy_at(&fb);
     }
@@ -372,7 +373,8 @@ TEST_SUITE("FB_Init on the whole block") {
     { FB_Forgets_Exit fb; }
     REQUIRE(faults.count() == 1);
     CHECK(faults.only(fault_kind::lifecycle));
-    CHECK(std::string(faults.last().message).find("FB_Forgets_Exit") != std::string::npos);
+    REQUIRE(faults.last().pou != nullptr);
+    CHECK(std::string(faults.last().pou) == "FB_Forgets_Exit");
     CHECK(std::string(faults.last().message).find("run_fb_exit") != std::string::npos);
     // The bases' FB_Exit still ran (on what is left of the block: FB_B's level).
     CHECK(calls.find("B.exit") != std::string::npos);

@@ -23,7 +23,6 @@
 #pragma once
 
 #include <cstddef>
-#include <string_view>
 
 #include <iecoop/config.hpp>
 #include <iecoop/fault.hpp>
@@ -44,8 +43,14 @@ constexpr const void* lifecycle_id() noexcept {
 
 /// How deeply constructions of blocks that EXTENDS others may nest in one another (a base
 /// part under construction, whose member is a derived block whose base part is under
-/// construction, ...); deeper nesting is a fault.
-inline constexpr int lifecycle_nesting = 32;
+/// construction, ...); deeper nesting is a fault. Each level costs 32 bytes of RAM on a
+/// 32-bit target (the firmware's budget counts them): define IECOOP_LIFECYCLE_NESTING for
+/// the whole build to change it.
+#if !defined(IECOOP_LIFECYCLE_NESTING)
+#define IECOOP_LIFECYCLE_NESTING 12
+#endif
+inline constexpr int lifecycle_nesting = IECOOP_LIFECYCLE_NESTING;
+static_assert(lifecycle_nesting >= 2, "iecoop: IECOOP_LIFECYCLE_NESTING is at least 2; define it larger");
 
 struct construction_frame {
   const void* base = nullptr;  ///< the level under construction as a base part of a derived block
@@ -59,7 +64,7 @@ struct owed_fb_init {
   const void* derived = nullptr;
   const void* root = nullptr;
   std::size_t size = 0;
-  std::string_view name;
+  const char* name = nullptr;  ///< the block's name (short_type_name_c: no RAM of its own)
 };
 
 struct lifecycle_tracking {
@@ -69,29 +74,31 @@ struct lifecycle_tracking {
   int owed_count = 0;
   const void* exit_levels[lifecycle_nesting]{};  ///< the level whose destructor comes next
   int exit_count = 0;
-  char message[512]{};  ///< the text of the last lifecycle fault (a fault's message is a C string)
 };
-inline lifecycle_tracking tracking{};
+/// The tracking state, once a block that EXTENDS another has been constructed (nullptr
+/// before: a program without EXTENDS has no frames, and links no RAM for them).
+inline lifecycle_tracking* tracking_in_use = nullptr;
 
-/// Reports fault_kind::lifecycle with `before` + name + `after` as its text.
-inline void lifecycle_fault(const char* before, std::string_view name, const char* after) {
-  char* out = tracking.message;
-  char* const end = tracking.message + sizeof(tracking.message) - 1;
-  for (const char* p = before; *p != '\0' && out < end; ++p) *out++ = *p;
-  for (const char c : name) {
-    if (out < end) *out++ = c;
-  }
-  for (const char* p = after; *p != '\0' && out < end; ++p) *out++ = *p;
-  *out = '\0';
-  fault(fault_kind::lifecycle, tracking.message);
+/// The tracking state, for extends<>'s markers (only they can open frames and records).
+inline lifecycle_tracking& extends_tracking() noexcept {
+  static constinit lifecycle_tracking storage{};
+  tracking_in_use = &storage;
+  return storage;
+}
+
+/// Reports fault_kind::lifecycle about the block `name`: the fault's text is `message` (a
+/// constant), its pou the block's name, so that a report costs no RAM for a composed text.
+inline void lifecycle_fault(const char* message, const char* name) {
+  fault_info info{fault_kind::lifecycle, message, current_fault_context.task, name};
+  current_fault_handler(info);
 }
 
 inline void report_owed(const owed_fb_init& owed) {
-  lifecycle_fault("the constructor of ", owed.name,
-                  " does not call run_fb_init(*this, ...) (an inherited constructor, `using extends::extends;`, "
-                  "cannot): the FB_Init of the blocks it EXTENDS did not run, as iecoop runs them on the whole "
-                  "block only from the most derived one; give it a constructor that calls "
-                  "run_fb_init(*this, <FB_Init parameters>)");
+  lifecycle_fault("a block's constructor does not call run_fb_init(*this, ...) (an inherited constructor, `using "
+                  "extends::extends;`, cannot): the FB_Init of the blocks it EXTENDS did not run, as iecoop runs "
+                  "them on the whole block only from the most derived one; give the block (the fault's pou) a "
+                  "constructor that calls run_fb_init(*this, <FB_Init parameters>)",
+                  owed.name);
 }
 
 /// Reports (and forgets) the derived blocks whose constructors ended without running their
@@ -99,6 +106,8 @@ inline void report_owed(const owed_fb_init& owed) {
 /// lifecycle operation), else those `at` does not lie in (a member of a block under
 /// construction lies in it).
 inline void settle_owed(const void* at) {
+  if (tracking_in_use == nullptr) return;
+  lifecycle_tracking& tracking = *tracking_in_use;
   while (tracking.owed_count > 0) {
     const owed_fb_init& top = tracking.owed[tracking.owed_count - 1];
     if (at != nullptr && top.root != nullptr) {
@@ -116,14 +125,16 @@ inline void settle_owed(const void* at) {
 
 inline bool nesting_overflow() {
   fault(fault_kind::lifecycle,
-        "blocks that EXTENDS others are nested more than 32 deep while being constructed or destroyed; FB_Init and "
-        "FB_Exit may not run on the whole block");
+        "blocks that EXTENDS others are nested deeper than IECOOP_LIFECYCLE_NESTING (12 unless defined) while being "
+        "constructed or destroyed; FB_Init and FB_Exit may not run on the whole block: define it larger for the "
+        "whole build");
   return true;
 }
 
 /// extends<Derived, Base>'s first base is constructed (at `where`): Base's construction as a
 /// part of a Derived begins.
 inline void begin_base_construction(const void* base, const void* where) noexcept {
+  lifecycle_tracking& tracking = extends_tracking();
   if (tracking.frame_count == lifecycle_nesting) {
     (void)nesting_overflow();
     return;
@@ -135,6 +146,8 @@ inline void begin_base_construction(const void* base, const void* where) noexcep
 /// The bottom level of a block (function_block<Self>'s first base) is being constructed at
 /// `root`: the frames opened for this object learn where it lies.
 inline void root_constructed(const void* root) noexcept {
+  if (tracking_in_use == nullptr) return;
+  lifecycle_tracking& tracking = *tracking_in_use;
   for (int i = tracking.frame_count - 1; i >= 0 && tracking.frames[i].root == nullptr; --i) {
     tracking.frames[i].root = root;
   }
@@ -144,7 +157,8 @@ inline void root_constructed(const void* root) noexcept {
 /// object under construction (its FB_Init then waits for the most derived level's call).
 template <class B>
 bool fb_init_deferred() noexcept {
-  if (tracking.frame_count == 0) return false;
+  if (tracking_in_use == nullptr || tracking_in_use->frame_count == 0) return false;
+  lifecycle_tracking& tracking = *tracking_in_use;
   construction_frame& top = tracking.frames[tracking.frame_count - 1];
   if (top.base != lifecycle_id<B>()) return false;
   top.deferred = true;
@@ -155,7 +169,8 @@ bool fb_init_deferred() noexcept {
 /// base part of a block under construction, what Base deferred waits for that one; otherwise
 /// Derived is the whole object, whose constructor owes the deferred FB_Init.
 inline void end_base_construction(const void* derived, const void* base, std::size_t size,
-                                  std::string_view name) noexcept {
+                                  const char* name) noexcept {
+  lifecycle_tracking& tracking = extends_tracking();
   if (tracking.frame_count == 0 || tracking.frames[tracking.frame_count - 1].base != base) return;
   const construction_frame done = tracking.frames[--tracking.frame_count];
   if (!done.deferred) return;
@@ -175,6 +190,8 @@ inline void end_base_construction(const void* derived, const void* base, std::si
 template <class B>
 void fb_init_runs(const void* root) {
   settle_owed(root);
+  if (tracking_in_use == nullptr) return;
+  lifecycle_tracking& tracking = *tracking_in_use;
   if (tracking.owed_count > 0 && tracking.owed[tracking.owed_count - 1].derived == lifecycle_id<B>()) {
     --tracking.owed_count;
   }
@@ -183,6 +200,8 @@ void fb_init_runs(const void* root) {
 /// Whether the FB_Exit of level B already ran, from the destructor of a block derived from it.
 template <class B>
 bool fb_exit_ran_for() noexcept {
+  if (tracking_in_use == nullptr) return false;
+  const lifecycle_tracking& tracking = *tracking_in_use;
   return tracking.exit_count > 0 && tracking.exit_levels[tracking.exit_count - 1] == lifecycle_id<B>();
 }
 
@@ -190,6 +209,7 @@ bool fb_exit_ran_for() noexcept {
 /// will find the record.
 template <class B>
 void fb_exit_runs() {
+  lifecycle_tracking& tracking = extends_tracking();
   if (tracking.exit_count == lifecycle_nesting) {
     (void)nesting_overflow();
     return;
@@ -200,6 +220,7 @@ void fb_exit_runs() {
 /// extends<Derived, Base>'s last base is destroyed: if Derived's destructor ran the FB_Exit
 /// chain, the record moves on to Base (whose destructor is next). FALSE if there is no record.
 inline bool fb_exit_level_done(const void* derived, const void* base) noexcept {
+  lifecycle_tracking& tracking = extends_tracking();
   if (tracking.exit_count == 0 || tracking.exit_levels[tracking.exit_count - 1] != derived) return false;
   tracking.exit_levels[tracking.exit_count - 1] = base;
   return true;
@@ -208,6 +229,7 @@ inline bool fb_exit_level_done(const void* derived, const void* base) noexcept {
 /// extends<Derived, Base>'s first base is destroyed: Base is gone; the record ends if Base was
 /// the bottom level.
 inline void end_fb_exit_record(const void* base) noexcept {
+  lifecycle_tracking& tracking = extends_tracking();
   if (tracking.exit_count > 0 && tracking.exit_levels[tracking.exit_count - 1] == base) --tracking.exit_count;
 }
 

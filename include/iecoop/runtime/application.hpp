@@ -139,6 +139,11 @@ class application {
   /// is a controller restart.
   void stop() {
     if (!constructed_) return;
+    if constexpr (retain_bytes == 0) {  // no retain memory: nothing to save (and none of its code)
+      destroy();
+      scheduler_.halt();
+      return;
+    }
     const std::size_t size = save(retain_kinds::both);
     retain_size_ = size;
     own_verdict_ = size > 0 ? detail::check_retained(store_.objects(), retain_kinds::both, retained_image(size))
@@ -168,6 +173,18 @@ class application {
     const retain_kinds keep = kept_over(kind == reset_kind::warm   ? retain_event::warm_reset
                                         : kind == reset_kind::cold ? retain_event::cold_reset
                                                                    : retain_event::origin_reset);
+    if constexpr (retain_bytes == 0) {
+      // No retain memory: nothing was saved, so nothing can be lost; what the reset keeps
+      // counts as kept (bInitRetains = FALSE on a warm reset, as with memory).
+      destroy();
+      iecoop::retain_status status;
+      status.retain = keep.contains(retain_kind::retain) ? retain_load::restored : retain_load::not_kept;
+      status.persistent = keep.contains(retain_kind::persistent) ? retain_load::restored : retain_load::not_kept;
+      publish(status);
+      construct(!keep.contains(retain_kind::retain));
+      scheduler_.restart();
+      return;
+    }
     const std::size_t size = save(keep);
     // What the reset keeps, checked on the instances that wrote it, and whether they were
     // constructed in the image's order (then their next construction takes the values).
@@ -399,6 +416,11 @@ class application {
    */
   void construct_restoring(bool init_retains, detail::retained_verdict verdict, retain_kinds ordered, std::size_t size,
                            iecoop::retain_status status) {
+    if constexpr (retain_bytes == 0) {  // nothing stored: constructed with the initial values
+      publish(status);
+      construct(init_retains);
+      return;
+    }
     const auto objects = store_.objects();
     const std::span<const std::byte> stored = retained_image(size);
     const retain_kinds restorable = size > 0 ? verdict.restorable() : retain_kinds::none;

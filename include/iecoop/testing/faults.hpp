@@ -51,7 +51,7 @@ struct fault_record {
   fault_kind kind{};
   const char* message = "";
   const char* task = nullptr;  ///< the task whose cycle was running, or nullptr
-  const char* pou = nullptr;   ///< the program it was calling, or nullptr
+  const char* pou = nullptr;   ///< the program it was calling (a lifecycle fault: the block), or nullptr
   LTIME time{};                ///< the cycle clock then
 };
 
@@ -68,6 +68,9 @@ inline std::string describe(const fault_record& f) {
       text += ", program ";
       text += f.pou;
     }
+    text += ", ";
+  } else if (f.pou != nullptr) {
+    text += f.pou;  // outside a cycle: the block a lifecycle fault is about
     text += ", ";
   }
   char time[max_text_length<LTIME>];
