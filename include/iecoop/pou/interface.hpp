@@ -20,6 +20,11 @@
 //     ipInterface->P_Result = 2;        // ipInterface.P_Result := 2;
 //     r = ipInterface->M_Add(3);        // r := ipInterface.M_Add(3);
 //
+// An interface variable is assigned, as in ST, a block implementing the interface, another
+// interface variable of it or of an interface that extends it, and any variable form holding
+// one: a block's var<itf<I>>, a PROPERTY of interface type, a REFERENCE TO a block or to an
+// interface variable.
+//
 // An interface is an abstract class: a block that misses one of its methods or properties
 // cannot be instantiated, and the compiler names what is missing. A call through an
 // interface variable is one virtual call. A call through an unassigned one is a fault.

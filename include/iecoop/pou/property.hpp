@@ -14,6 +14,11 @@
 //     if (fbA.prop_iA > 500) ...       // calls Get
 //     iVar = fbA.prop_iA;              // calls Get
 //
+// A property of interface type (or POINTER_TO, REFERENCE_TO) is gone through with `->`, ST's dot:
+// `fbPID.IntegratorBounds->Maximum = 5.0;` calls Get, then the interface's own Maximum Set;
+// `fbPID.IntegratorBounds->Reset();` calls Get, then Reset. Of a STRUCT property, `->` reads a
+// field of Get's copy (`r = fb.Limits->rHigh;`), which cannot be assigned.
+//
 // A property holds no data. Declared [[no_unique_address]] — always: it is how the property
 // finds its block — it adds no bytes, sits at its owner's own address (GCC and Clang place an
 // empty member there, following the Itanium C++ ABI) and compiles to the accessor call. Its
