@@ -20,6 +20,11 @@
 //     ipInterface->P_Result = 2;        // ipInterface.P_Result := 2;
 //     r = ipInterface->M_Add(3);        // r := ipInterface.M_Add(3);
 //
+// An interface variable is assigned, as in ST, a block implementing the interface, another
+// interface variable of it or of an interface that extends it, and any variable form holding
+// one: a block's var<itf<I>>, a PROPERTY of interface type, a REFERENCE TO a block or to an
+// interface variable.
+//
 // An interface is an abstract class: a block that misses one of its methods or properties
 // cannot be instantiated, and the compiler names what is missing. A call through an
 // interface variable is one virtual call. A call through an unassigned one is a fault.
@@ -35,6 +40,7 @@
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/meta.hpp>
+#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -243,6 +249,19 @@ template <class I>
 inline constexpr bool is_interface_variable<itf<I>> = true;
 template <class I>
 struct is_iec_value<itf<I>> : std::true_type {};
+
+/// A variable of iecoop's (var<>, in_out<> and REFERENCE_TO, retain<>, a PROPERTY, ...), also
+/// one whose value only its block may read.
+template <class T>
+concept any_variable_wrapper = requires { typename std::remove_cvref_t<T>::iecoop_value_wrapper; };
+
+/// A variable wrapper whose value is a block implementing I, reached as the variable itself
+/// (a REFERENCE TO FB_X or an in-out of it: `ip := refBlock;`).
+template <class I, class W>
+concept wraps_implementing_block = value_wrapper<W> && requires(W& w) {
+  { w.get() } -> std::same_as<unwrapped_t<W>&>;
+  requires std::derived_from<unwrapped_t<W>, I>;
+};
 }  // namespace detail
 
 template <class I>
@@ -259,8 +278,13 @@ class itf {
   template <class T>
     requires(std::derived_from<T, I>)
   constexpr itf(T& block) noexcept : target_(&block) {}  // implicit: ST assigns instances to interface variables
+  /// From a REFERENCE TO (or in-out of) a block implementing I: `ip = refBlock;`.
+  template <class W>
+    requires detail::wraps_implementing_block<I, W>
+  constexpr itf(W& reference) : target_(&reference.get()) {}  // implicit: as the block itself
   template <class T>
-    requires(!std::derived_from<T, I> && !detail::is_interface_variable<std::remove_cv_t<T>>)
+    requires(!std::derived_from<T, I> && !detail::is_interface_variable<std::remove_cv_t<T>> &&
+             !detail::any_variable_wrapper<T>)
   itf(T&) {  // implicit on purpose
     static_assert(detail::dependent_false<T>,
                   "iecoop: this block does not implement the interface; declare it "

@@ -14,6 +14,11 @@
 //     if (fbA.prop_iA > 500) ...       // calls Get
 //     iVar = fbA.prop_iA;              // calls Get
 //
+// A property of interface type (or POINTER_TO, REFERENCE_TO) is gone through with `->`, ST's dot:
+// `fbPID.IntegratorBounds->Maximum = 5.0;` calls Get, then the interface's own Maximum Set;
+// `fbPID.IntegratorBounds->Reset();` calls Get, then Reset. Of a STRUCT property, `->` reads a
+// field of Get's copy (`r = fb.Limits->rHigh;`), which cannot be assigned.
+//
 // A property holds no data. Declared [[no_unique_address]] — always: it is how the property
 // finds its block — it adds no bytes, sits at its owner's own address (GCC and Clang place an
 // empty member there, following the Itanium C++ ABI) and compiles to the accessor call. Its
@@ -125,6 +130,23 @@ struct property_read_by_owner_only {};
 /// LREAL, not as int).
 template <class T, class U>
 concept widens_to = !std::is_same_v<U, T> && std::is_convertible_v<const T&, U> && requires(const T& t) { U{t}; };
+
+/// A value with a `->` of its own: an interface variable (itf<I>), a POINTER_TO, a REFERENCE_TO.
+template <class T>
+concept has_arrow = requires(const T& value) { value.operator->(); };
+
+/// What `fb.Prop->field` reaches for a property of a STRUCT type: the fields of the copy Get
+/// gave, read-only (assigning a field of a copy would change nothing), for the rest of the
+/// statement.
+template <class T>
+class property_value_copy {
+ public:
+  explicit constexpr property_value_copy(const T& value) : value_(value) {}
+  constexpr const T* operator->() const noexcept { return &value_; }
+
+ private:
+  T value_;
+};
 
 }  // namespace detail
 
@@ -249,6 +271,24 @@ class property {
     detail::reject_value<T, V>();
   }
 
+  /// ST's `fb.Prop.Member`: the member of what Get gives. Through a property of interface
+  /// type (or POINTER_TO, REFERENCE_TO) it reaches the block behind it, as the interface
+  /// variable does: `fbPID.IntegratorBounds->Maximum = 5.0;` calls IntegratorBounds' Get, then
+  /// the interface's own Maximum Set; `fbPID.IntegratorBounds->Reset();` calls Reset; an
+  /// interface that is 0 is a fault (fault_kind::unassigned_interface). Of a STRUCT property it
+  /// reads a field of the value (`x = fb.Position->x;`); the fields are read-only, as the value
+  /// is a copy: assign the whole property to change it.
+  auto operator->()
+    requires(!owner_get && std::is_class_v<T>)
+  {
+    return arrow(*this);
+  }
+  auto operator->() const
+    requires(!owner_get && std::is_class_v<T>)
+  {
+    return arrow(*this);
+  }
+
   /// What reading the property gives (its Get accessor).
   [[nodiscard]] T get()
     requires(!owner_get)
@@ -330,6 +370,16 @@ class property {
   {
     return read();
   }
+  auto operator->()
+    requires(owner_get && std::is_class_v<T>)
+  {
+    return arrow(*this);
+  }
+  auto operator->() const
+    requires(owner_get && std::is_class_v<T>)
+  {
+    return arrow(*this);
+  }
   property& operator=(const T& value)
     requires(owner_set)
   {
@@ -348,6 +398,31 @@ class property {
     if constexpr (readable) {
       static_assert(std::is_convertible_v<std::invoke_result_t<decltype(Get), owner_type&>, T>,
                     "iecoop: a property's Get accessor returns the property's type; declare it `T Name_Get()`");
+    }
+  }
+
+  // `->`: Get's value, through which C++ applies the value's own `->` next (an interface
+  // variable, a pointer, a reference), or a read-only copy of a STRUCT.
+  template <class Self>
+  static auto arrow(Self& self) {
+    static_assert(readable,
+                  "iecoop: `fb.Prop->Member` reaches the member through the value the property's Get gives, and "
+                  "this property has no Get (it is write-only); give the property a Get accessor, or assign "
+                  "the whole property (`fb.Prop = value;`)");
+    static_assert(detail::has_arrow<T> || !detail::is_iec_value<T>::value,
+                  "iecoop: `fb.Prop->Member` reaches into a property of interface, POINTER_TO, REFERENCE_TO or "
+                  "STRUCT type; a value of this type has no members: read the property as a value");
+    if constexpr (!readable) {
+      // (Refused above; what is returned only keeps the compiler from adding errors.)
+      if constexpr (detail::has_arrow<T> && std::is_default_constructible_v<T>) {
+        return T{};
+      } else {
+        return static_cast<const T*>(nullptr);
+      }
+    } else if constexpr (detail::has_arrow<T>) {
+      return self.read();  // C++ applies T's own operator-> next (an unassigned interface faults there)
+    } else {
+      return detail::property_value_copy<T>(self.read());
     }
   }
 
