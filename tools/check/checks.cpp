@@ -712,6 +712,7 @@ class checker {
       std::vector<note> notes;
       std::string first_override;
       CXCursor first_class = clang_getNullCursor();
+      std::string first_accessor;  // for a property: the accessor overridden
       for (const CXCursor derived : block_classes_) {
         if (usr(members_of(derived)) == usr(members_of(call.owner)) || !is_or_derives_from(derived, call.owner)) {
           continue;
@@ -723,6 +724,7 @@ class checker {
           if (first_override.empty()) {
             first_override = name;
             first_class = derived;
+            first_accessor = spelling(called);
           }
           if (derived_names.empty() || derived_names.back() != class_name(derived)) {
             derived_names.push_back(class_name(derived));
@@ -742,7 +744,7 @@ class checker {
                (derived_names.size() == 1 ? " overrides" : " override");
       } else {
         what = block + "::" + lifecycle + " " + call.access + " the property " + call.property + ", whose accessor " +
-               derived_list + (derived_names.size() == 1 ? " overrides" : " override");
+               first_accessor + " " + derived_list + (derived_names.size() == 1 ? " overrides" : " override");
       }
       const bool own = declares_member(first_class, lifecycle);
       std::string when;
@@ -750,16 +752,16 @@ class checker {
       if (lifecycle == "FB_Init") {
         when = own ? "before " + first + "::FB_Init has run"
                    : "before the FB_Init of any block extending " + block + " has run";
-        needs = "sets up in their FB_Init";
+        needs = "set up in their FB_Init";
       } else if (lifecycle == "FB_Exit") {
         when = own ? "after " + first + "::FB_Exit has run"
                    : "after the FB_Exit of the blocks extending " + block + " has run";
-        needs = "releases in their FB_Exit";
+        needs = "release in their FB_Exit";
       } else {
         when =
-            "whose own FB_Reinit may not have finished (a base's FB_Reinit runs where the derived one calls "
-            "SUPER^.FB_Reinit())";
-        needs = "restores in their FB_Reinit";
+            "whose own FB_Reinit may not have finished, as a base's FB_Reinit runs where the derived one calls "
+            "SUPER^.FB_Reinit()";
+        needs = "restore in their FB_Reinit";
       }
       const std::string rule = lifecycle == "FB_Init"
                                    ? "CODESYS's static analysis rule SA0106, virtual method calls in FB_init"
@@ -825,7 +827,10 @@ class checker {
   /// What a missing hook costs: for a block that EXTENDS another, a lifecycle fault at run
   /// time; for a block of its own, its FB_Init or FB_Exit never runs.
   static std::string lifecycle_consequence(CXCursor cls, CXCursor level, bool derived, const std::string& lifecycle) {
-    if (!derived) return class_name(level) + "::" + lifecycle + " never runs";
+    if (!derived) {
+      return class_name(level) + "::" + lifecycle + " does not run when an instance of " + class_name(cls) +
+             (lifecycle == "FB_Init" ? " is constructed" : " ends");
+    }
     return "no level's " + lifecycle + " runs on the whole block when an instance of " + class_name(cls) +
            (lifecycle == "FB_Init" ? " is constructed" : " ends") +
            " (iecoop reports a lifecycle fault at run time; it runs every level's " + lifecycle +
@@ -862,18 +867,22 @@ class checker {
         if (is_deleted(member)) continue;
         own_constructor = true;
         const CXCursor definition = clang_getCursorDefinition(member);
-        if (is_null(definition)) continue;  // defined in another file: not seen here
-        if (clang_CXXMethod_isDefaulted(definition) == 0 && hands_on(definition, cls, "run_fb_init")) continue;
+        if (clang_CXXMethod_isDefaulted(member) == 0) {
+          if (is_null(definition)) continue;  // defined in another file: not seen here
+          if (hands_on(definition, cls, "run_fb_init")) continue;
+        }
         report(member, has + ", but this constructor of " + name + " does not call run_fb_init(*this, ...), so " +
                            lifecycle_consequence(cls, init_level, derived, "FB_Init") +
                            "; call run_fb_init(*this, <FB_Init parameters>) in it");
       }
       if (!own_constructor) {
-        report(cls, has + ", but " + name +
-                        " has no constructor of its own that calls run_fb_init(*this, ...) (an implicit or inherited "
-                        "constructor cannot), so " +
-                        lifecycle_consequence(cls, init_level, derived, "FB_Init") + "; give it one: " +
-                        spelling(members_of(cls)) + "() { run_fb_init(*this); }, with the FB_Init parameters");
+        report(
+            cls,
+            has +
+                ", but it has no constructor of its own that calls run_fb_init(*this, ...) (an implicit or inherited "
+                "constructor cannot), so " +
+                lifecycle_consequence(cls, init_level, derived, "FB_Init") + "; give it one: " +
+                spelling(members_of(cls)) + "() { run_fb_init(*this); }, with the FB_Init parameters");
       }
     }
 
@@ -888,12 +897,12 @@ class checker {
       const std::string fix =
           "~" + spelling(members_of(cls)) + "()" + (derived ? " override" : "") + " { run_fb_exit(*this); }";
       if (destructor == members.end()) {
-        report(cls, has + ", but " + name + " has no destructor of its own that calls run_fb_exit(*this), so " +
+        report(cls, has + ", but it has no destructor of its own that calls run_fb_exit(*this), so " +
                         lifecycle_consequence(cls, exit_level, derived, "FB_Exit") + "; give it one: " + fix);
       } else {
         const CXCursor definition = clang_getCursorDefinition(*destructor);
-        if (!is_null(definition) &&
-            (clang_CXXMethod_isDefaulted(definition) != 0 || !hands_on(definition, cls, "run_fb_exit"))) {
+        if (clang_CXXMethod_isDefaulted(*destructor) != 0 ||
+            (!is_null(definition) && !hands_on(definition, cls, "run_fb_exit"))) {
           report(*destructor, has + ", but the destructor of " + name + " does not call run_fb_exit(*this), so " +
                                   lifecycle_consequence(cls, exit_level, derived, "FB_Exit") + "; write " + fix);
         }
