@@ -29,6 +29,18 @@ struct method_variables {
   std::set<std::string> fields;
 };
 
+/// Check 6: a call, in a block's FB_Init, FB_Reinit or FB_Exit, of a method of the block
+/// (through THIS^), or an access to one of its properties, to be matched with the blocks that
+/// extend it once every class of the translation unit is known.
+struct lifecycle_call {
+  CXCursor at;                   // the member expression: `Meth`, `this->Meth`, `Maximum`
+  CXCursor lifecycle;            // the FB_Init, FB_Reinit or FB_Exit the call is in
+  CXCursor owner;                // its block
+  std::vector<CXCursor> called;  // the method, or the property's accessors the access calls
+  std::string property;          // the property's name, or empty for a method
+  std::string access;            // for a property: "reads", "sets" or "reads and sets"
+};
+
 /// The function whose code the walk is in (a lambda's code is its enclosing function's).
 struct code_context {
   CXCursor function;
@@ -51,6 +63,7 @@ class checker {
     const CXCursor root = clang_getTranslationUnitCursor(unit_);
     find_library_dir(root);
     for (const CXCursor child : children(root)) walk(child);
+    report_lifecycle_calls();
     return std::move(findings_);
   }
 
@@ -566,6 +579,337 @@ class checker {
     }
   }
 
+  // --- Virtual calls in FB_Init, FB_Reinit, FB_Exit (check 6) --------------------------
+
+  /// The lifecycle method (FB_Init, FB_Reinit, FB_Exit) of a block whose code the walk is in.
+  bool in_lifecycle_method(const code_context* context) {
+    return context != nullptr && !is_null(context->owner_class) &&
+           not_dispatched.count(spelling(context->function)) != 0 && info(context->owner_class).is_block;
+  }
+
+  static CXCursor strip(CXCursor expression) {
+    for (int depth = 0; depth < 16; ++depth) {
+      const CXCursorKind kind = clang_getCursorKind(expression);
+      if (kind != CXCursor_UnexposedExpr && kind != CXCursor_ParenExpr) break;
+      const std::vector<CXCursor> parts = children(expression);
+      if (parts.size() != 1) break;
+      expression = parts.front();
+    }
+    return expression;
+  }
+
+  /// A member expression on the block itself, dispatched: `M` or `this->M` or `(*this).M`
+  /// (ST's `M` and `THIS^.M`), not `FB_A::M` (qualified: not dispatched) nor `other.M`.
+  static bool is_dispatched_on_this(CXCursor member_expression) {
+    const std::vector<CXCursor> parts = children(member_expression);
+    for (const CXCursor part : parts) {
+      const CXCursorKind kind = clang_getCursorKind(part);
+      if (kind == CXCursor_TypeRef || kind == CXCursor_TemplateRef || kind == CXCursor_NamespaceRef) return false;
+    }
+    if (parts.empty()) return true;
+    CXCursor object = strip(parts.front());
+    if (clang_getCursorKind(object) == CXCursor_UnaryOperator) {  // `*this`
+      const std::vector<CXCursor> operand = children(object);
+      if (operand.size() != 1) return false;
+      object = strip(operand.front());
+    }
+    return clang_getCursorKind(object) == CXCursor_CXXThisExpr;
+  }
+
+  /// `Maximum = v` (or `+=`, `++`...) on a property in a lifecycle method: the access sets it.
+  void note_property_assignment(CXCursor call, const code_context* context) {
+    if (!in_lifecycle_method(context)) return;
+    const CXCursor callee = clang_getCursorReferenced(call);
+    if (is_null(callee) || assignment_operators.count(spelling(callee)) == 0 ||
+        clang_Cursor_getNumArguments(call) < 1) {
+      return;
+    }
+    const CXCursor target = strip(clang_Cursor_getArgument(call, 0));
+    if (clang_getCursorKind(target) == CXCursor_MemberRefExpr &&
+        is_iecoop_class(class_of(clang_getCursorType(target)), "property")) {
+      property_assigned_[clang_hashCursor(target)] = spelling(callee);
+    }
+  }
+
+  /// The accessors of a property member (`property<T, &FB::p_Get, &FB::p_Set>`), as its
+  /// declaration names them: those taking no parameter (Get) or one (Set).
+  static void property_accessors(CXCursor field, std::vector<CXCursor>& getters, std::vector<CXCursor>& setters) {
+    const auto visit = [&](const auto& self, CXCursor c, int depth) -> void {
+      if (depth > 8) return;
+      for (const CXCursor part : children(c)) {
+        if (clang_getCursorKind(part) == CXCursor_DeclRefExpr) {
+          const CXCursor accessor = clang_getCursorReferenced(part);
+          if (clang_getCursorKind(accessor) == CXCursor_CXXMethod) {
+            (clang_Cursor_getNumArguments(accessor) == 0 ? getters : setters).push_back(accessor);
+          }
+          continue;
+        }
+        if (clang_getCursorKind(part) == CXCursor_CallExpr) continue;  // the initializer `{this}`
+        self(self, part, depth + 1);
+      }
+    };
+    visit(visit, field, 0);
+  }
+
+  /// Check 6: notes a call of the block's own method, or an access to its property, inside
+  /// its FB_Init, FB_Reinit or FB_Exit, dispatched on the block itself.
+  void note_lifecycle_call(CXCursor member_expression, const code_context* context) {
+    if (!in_lifecycle_method(context) || !is_dispatched_on_this(member_expression)) return;
+    const CXCursor member = clang_getCursorReferenced(member_expression);
+    lifecycle_call call{member_expression, context->function, context->owner_class, {}, {}, {}};
+    if (clang_getCursorKind(member) == CXCursor_CXXMethod) {
+      if (clang_CXXMethod_isVirtual(member) == 0) return;  // not dispatched (check 1 reports a hiding one)
+      call.called.push_back(member);
+    } else if (clang_getCursorKind(member) == CXCursor_FieldDecl &&
+               is_iecoop_class(class_of(clang_getCursorType(member)), "property")) {
+      std::vector<CXCursor> getters;
+      std::vector<CXCursor> setters;
+      property_accessors(member, getters, setters);
+      const auto assigned = property_assigned_.find(clang_hashCursor(member_expression));
+      const bool sets = assigned != property_assigned_.end();
+      const bool reads = !sets || assigned->second != "operator=";
+      if (reads) call.called.insert(call.called.end(), getters.begin(), getters.end());
+      if (sets) call.called.insert(call.called.end(), setters.begin(), setters.end());
+      call.property = spelling(member);
+      call.access = reads && sets ? "reads and sets" : sets ? "sets" : "reads";
+    } else {
+      return;
+    }
+    lifecycle_calls_.push_back(std::move(call));
+  }
+
+  /// Whether `cls` itself declares a member function `name`.
+  static bool declares_member(CXCursor cls, const std::string& name) {
+    const std::vector<CXCursor> members = children(members_of(cls));
+    return std::any_of(members.begin(), members.end(), [&](CXCursor m) {
+      const CXCursorKind kind = clang_getCursorKind(m);
+      return (kind == CXCursor_CXXMethod || kind == CXCursor_FunctionTemplate) && spelling(m) == name;
+    });
+  }
+
+  /// The method of `cls` that overrides `method` (directly or through a block between them),
+  /// or a null cursor.
+  static CXCursor override_in(CXCursor cls, CXCursor method) {
+    const std::string wanted = usr(method);
+    for (const CXCursor member : children(cls)) {
+      if (clang_getCursorKind(member) != CXCursor_CXXMethod) continue;
+      std::set<std::string> overridden;
+      add_overridden(member, overridden);
+      if (overridden.count(wanted) != 0) return member;
+    }
+    return clang_getNullCursor();
+  }
+
+  /// Check 6 (CODESYS's SA0106): each noted call whose method a block derived from the
+  /// caller's block overrides. iecoop runs every level's FB_Init and FB_Exit on the whole
+  /// block, as CODESYS does: the call runs the derived block's code, for a level of it whose
+  /// own FB_Init has not run yet (or whose FB_Exit has run already).
+  void report_lifecycle_calls() {
+    for (const lifecycle_call& call : lifecycle_calls_) {
+      const std::string block = class_name(call.owner);
+      const std::string lifecycle = spelling(call.lifecycle);
+      std::vector<std::string> derived_names;
+      std::vector<note> notes;
+      std::string first_override;
+      CXCursor first_class = clang_getNullCursor();
+      std::string first_accessor;  // for a property: the accessor overridden
+      for (const CXCursor derived : block_classes_) {
+        if (usr(members_of(derived)) == usr(members_of(call.owner)) || !is_or_derives_from(derived, call.owner)) {
+          continue;
+        }
+        for (const CXCursor called : call.called) {
+          const CXCursor overriding = override_in(derived, called);
+          if (is_null(overriding)) continue;
+          const std::string name = class_name(derived) + "::" + spelling(overriding);
+          if (first_override.empty()) {
+            first_override = name;
+            first_class = derived;
+            first_accessor = spelling(called);
+          }
+          if (derived_names.empty() || derived_names.back() != class_name(derived)) {
+            derived_names.push_back(class_name(derived));
+          }
+          notes.push_back(note{location_of(overriding), name + " overrides it here"});
+        }
+      }
+      if (derived_names.empty()) continue;
+      std::string derived_list = derived_names.front();
+      for (std::size_t i = 1; i < derived_names.size(); ++i) {
+        derived_list += (i + 1 == derived_names.size() ? " and " : ", ") + derived_names[i];
+      }
+      const std::string& first = derived_names.front();
+      std::string what;
+      if (call.property.empty()) {
+        what = block + "::" + lifecycle + " calls " + spelling(call.called.front()) + ", which " + derived_list +
+               (derived_names.size() == 1 ? " overrides" : " override");
+      } else {
+        what = block + "::" + lifecycle + " " + call.access + " the property " + call.property + ", whose accessor " +
+               first_accessor + " " + derived_list + (derived_names.size() == 1 ? " overrides" : " override");
+      }
+      const bool own = declares_member(first_class, lifecycle);
+      std::string when;
+      std::string needs;
+      if (lifecycle == "FB_Init") {
+        when = own ? "before " + first + "::FB_Init has run"
+                   : "before the FB_Init of any block extending " + block + " has run";
+        needs = "set up in their FB_Init";
+      } else if (lifecycle == "FB_Exit") {
+        when = own ? "after " + first + "::FB_Exit has run"
+                   : "after the FB_Exit of the blocks extending " + block + " has run";
+        needs = "release in their FB_Exit";
+      } else {
+        when =
+            "whose own FB_Reinit may not have finished, as a base's FB_Reinit runs where the derived one calls "
+            "SUPER^.FB_Reinit()";
+        needs = "restore in their FB_Reinit";
+      }
+      const std::string rule = lifecycle == "FB_Init"
+                                   ? "CODESYS's static analysis rule SA0106, virtual method calls in FB_init"
+                                   : "CODESYS's static analysis rule SA0106 reports such calls in FB_init";
+      report(call.at,
+             what + ": iecoop runs " + lifecycle + " on the whole block, as CODESYS does, so for an instance of " +
+                 first + " it runs " + first_override + ", " + when + " (" + rule + "); make sure " + first_override +
+                 " needs nothing that the blocks extending " + block + " " + needs + ", or do the work in " + block +
+                 "::" + lifecycle + " itself or in a method that no block overrides",
+             std::move(notes));
+    }
+  }
+
+  // --- The lifecycle handed on: run_fb_init, run_fb_exit (check 7) ---------------------
+
+  /// The first of `chain` (a block, then the blocks it derives from) that declares `name`.
+  static CXCursor first_declaring(const std::vector<CXCursor>& chain, const std::string& name) {
+    for (const CXCursor level : chain) {
+      if (declares_member(level, name)) return level;
+    }
+    return clang_getNullCursor();
+  }
+
+  /// `= delete`: its last two tokens (libclang 14 has no clang_CXXMethod_isDeleted).
+  bool is_deleted(CXCursor function) {
+    CXToken* tokens = nullptr;
+    unsigned count = 0;
+    clang_tokenize(unit_, clang_getCursorExtent(function), &tokens, &count);
+    const bool deleted = count >= 2 && text(clang_getTokenSpelling(unit_, tokens[count - 1])) == "delete" &&
+                         text(clang_getTokenSpelling(unit_, tokens[count - 2])) == "=";
+    clang_disposeTokens(unit_, tokens, count);
+    return deleted;
+  }
+
+  /// Whether the code of `function` calls iecoop's `hook` (run_fb_init, run_fb_exit), or
+  /// delegates to another constructor of `cls` (which is checked itself).
+  static bool hands_on(CXCursor function, CXCursor cls, const char* hook) {
+    const std::string block = usr(members_of(cls));
+    const auto visit = [&](const auto& self, CXCursor c, int depth) -> bool {
+      if (depth > 256) return false;
+      for (const CXCursor part : children(c)) {
+        // In a template, a call whose arguments depend on its parameters names the function
+        // by an overloaded reference: run_fb_init(*this, std::forward<A>(a)...).
+        if (clang_getCursorKind(part) == CXCursor_OverloadedDeclRef && spelling(part) == hook &&
+            clang_getNumOverloadedDecls(part) > 0 && in_namespace_iecoop(clang_getOverloadedDecl(part, 0))) {
+          return true;
+        }
+        if (clang_getCursorKind(part) == CXCursor_CallExpr) {
+          const CXCursor callee = clang_getCursorReferenced(part);
+          if (!is_null(callee) && spelling(callee) == hook && in_namespace_iecoop(callee)) return true;
+          if (clang_getCursorKind(callee) == CXCursor_Constructor &&
+              usr(members_of(clang_getCursorSemanticParent(callee))) == block) {
+            return true;
+          }
+        }
+        if (self(self, part, depth + 1)) return true;
+      }
+      return false;
+    };
+    return visit(visit, function, 0);
+  }
+
+  /// What a missing hook costs: for a block that EXTENDS another, a lifecycle fault at run
+  /// time; for a block of its own, its FB_Init or FB_Exit never runs.
+  static std::string lifecycle_consequence(CXCursor cls, CXCursor level, bool derived, const std::string& lifecycle) {
+    if (!derived) {
+      return class_name(level) + "::" + lifecycle + " does not run when an instance of " + class_name(cls) +
+             (lifecycle == "FB_Init" ? " is constructed" : " ends");
+    }
+    return "no level's " + lifecycle + " runs on the whole block when an instance of " + class_name(cls) +
+           (lifecycle == "FB_Init" ? " is constructed" : " ends") +
+           " (iecoop reports a lifecycle fault at run time; it runs every level's " + lifecycle +
+           " from the most derived block, as CODESYS runs them on the whole block)";
+  }
+
+  /// Check 7: a block that has, or EXTENDS a block that has, an FB_Init whose constructors do
+  /// not call run_fb_init(*this, ...); the same for FB_Exit and its destructor.
+  void check_lifecycle_hooks(CXCursor cls) {
+    if (clang_getCursorKind(cls) == CXCursor_ClassTemplatePartialSpecialization) return;
+    const class_info& cls_info = info(cls);
+    if (!cls_info.is_block) return;
+    std::vector<CXCursor> chain{cls};
+    chain.insert(chain.end(), cls_info.bases.begin(), cls_info.bases.end());
+    const bool derived = !cls_info.bases.empty();
+    const std::string name = class_name(cls);
+
+    const CXCursor init_level = first_declaring(chain, "FB_Init");
+    if (!is_null(init_level)) {
+      const std::string has = usr(members_of(init_level)) == usr(members_of(cls))
+                                  ? name + " has an FB_Init"
+                                  : name + " EXTENDS " + class_name(init_level) + ", which has an FB_Init";
+      bool own_constructor = false;
+      for (const CXCursor member : children(cls)) {
+        const CXCursorKind kind = clang_getCursorKind(member);
+        const bool constructor =
+            kind == CXCursor_Constructor ||
+            (kind == CXCursor_FunctionTemplate && clang_getTemplateCursorKind(member) == CXCursor_Constructor);
+        if (!constructor) continue;
+        if (kind == CXCursor_Constructor && (clang_CXXConstructor_isCopyConstructor(member) != 0 ||
+                                             clang_CXXConstructor_isMoveConstructor(member) != 0)) {
+          continue;
+        }
+        if (is_deleted(member)) continue;
+        own_constructor = true;
+        const CXCursor definition = clang_getCursorDefinition(member);
+        if (clang_CXXMethod_isDefaulted(member) == 0) {
+          if (is_null(definition)) continue;  // defined in another file: not seen here
+          if (hands_on(definition, cls, "run_fb_init")) continue;
+        }
+        report(member, has + ", but this constructor of " + name + " does not call run_fb_init(*this, ...), so " +
+                           lifecycle_consequence(cls, init_level, derived, "FB_Init") +
+                           "; call run_fb_init(*this, <FB_Init parameters>) in it");
+      }
+      if (!own_constructor) {
+        report(
+            cls,
+            has +
+                ", but it has no constructor of its own that calls run_fb_init(*this, ...) (an implicit or inherited "
+                "constructor cannot), so " +
+                lifecycle_consequence(cls, init_level, derived, "FB_Init") + "; give it one: " +
+                spelling(members_of(cls)) + "() { run_fb_init(*this); }, with the FB_Init parameters");
+      }
+    }
+
+    const CXCursor exit_level = first_declaring(chain, "FB_Exit");
+    if (!is_null(exit_level)) {
+      const std::string has = usr(members_of(exit_level)) == usr(members_of(cls))
+                                  ? name + " has an FB_Exit"
+                                  : name + " EXTENDS " + class_name(exit_level) + ", which has an FB_Exit";
+      const std::vector<CXCursor> members = children(cls);
+      const auto destructor = std::find_if(members.begin(), members.end(),
+                                           [](CXCursor m) { return clang_getCursorKind(m) == CXCursor_Destructor; });
+      const std::string fix =
+          "~" + spelling(members_of(cls)) + "()" + (derived ? " override" : "") + " { run_fb_exit(*this); }";
+      if (destructor == members.end()) {
+        report(cls, has + ", but it has no destructor of its own that calls run_fb_exit(*this), so " +
+                        lifecycle_consequence(cls, exit_level, derived, "FB_Exit") + "; give it one: " + fix);
+      } else {
+        const CXCursor definition = clang_getCursorDefinition(*destructor);
+        if (clang_CXXMethod_isDefaulted(*destructor) != 0 ||
+            (!is_null(definition) && !hands_on(definition, cls, "run_fb_exit"))) {
+          report(*destructor, has + ", but the destructor of " + name + " does not call run_fb_exit(*this), so " +
+                                  lifecycle_consequence(cls, exit_level, derived, "FB_Exit") + "; write " + fix);
+        }
+      }
+    }
+  }
+
   // --- The walk -----------------------------------------------------------------------
 
   void walk(CXCursor c) {
@@ -574,6 +918,8 @@ class checker {
     if (is_class_kind(kind) && clang_isCursorDefinition(c) != 0) {
       check_block_class(c);
       check_uninitialised_members(c);
+      if (info(c).is_block) block_classes_.push_back(c);
+      check_lifecycle_hooks(c);
     }
     if (is_function_kind(kind)) {
       if (clang_isCursorDefinition(c) == 0) return;  // a declaration only: nothing to check
@@ -585,11 +931,17 @@ class checker {
       return;
     }
     const code_context* context = contexts_.empty() ? nullptr : &contexts_.back();
-    if (kind == CXCursor_CallExpr) check_write(c, context);
+    if (kind == CXCursor_CallExpr) {
+      check_write(c, context);
+      note_property_assignment(c, context);
+    }
     if (kind == CXCursor_BinaryOperator || kind == CXCursor_CompoundAssignOperator || kind == CXCursor_UnaryOperator) {
       check_builtin_write(c, context);
     }
-    if (kind == CXCursor_MemberRefExpr) check_shadowed(c, context);
+    if (kind == CXCursor_MemberRefExpr) {
+      check_shadowed(c, context);
+      note_lifecycle_call(c, context);
+    }
     if (kind == CXCursor_VarDecl && loop_variables_.count(clang_hashCursor(c)) == 0)
       check_uninitialised_local(c, context);
     if (kind == CXCursor_LambdaExpr && takes_args(c)) {  // a FUNCTION: [](args<Vars> in) { ... }
@@ -612,7 +964,10 @@ class checker {
   std::map<std::string, class_info> classes_;
   std::vector<code_context> contexts_;
   std::set<unsigned> loop_variables_;
-  int pou_code_depth_ = 0;  // inside a lambda that takes args<Vars>
+  std::vector<CXCursor> block_classes_;                // every block class the user defines (check 6)
+  std::vector<lifecycle_call> lifecycle_calls_;        // check 6, matched at the end
+  std::map<unsigned, std::string> property_assigned_;  // a property's member expression: the operator assigning it
+  int pou_code_depth_ = 0;                             // inside a lambda that takes args<Vars>
   std::vector<finding> findings_;
 };
 
