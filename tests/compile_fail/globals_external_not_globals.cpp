@@ -2,8 +2,8 @@
 // EXPECT: globals_external_not_globals.cpp:2[0-9]
 // EXPECT-ERRORS: 1
 // VAR_EXTERNAL given as the list itself instead of globals<GVL_Plant>.
-#include <iecoop/runtime/application.hpp>
 #include <iecoop/pou/global_variables.hpp>
+#include <iecoop/runtime/application.hpp>
 #include <iecoop/types/literals.hpp>
 
 using namespace iecoop;

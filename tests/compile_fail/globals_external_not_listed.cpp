@@ -3,8 +3,8 @@
 // EXPECT: GVL_Plant
 // EXPECT-ERRORS: 1
 // MODE_PRG names the lists it uses (ST's VAR_EXTERNAL); the application lacks GVL_Plant.
-#include <iecoop/runtime/application.hpp>
 #include <iecoop/pou/global_variables.hpp>
+#include <iecoop/runtime/application.hpp>
 #include <iecoop/types/literals.hpp>
 
 using namespace iecoop;

@@ -3,8 +3,8 @@
 // EXPECT: GVL_Plant
 // EXPECT-ERRORS: 1
 // plc.get<GVL_Plant>() of an application without globals<GVL_Plant>{}: it would fault at run time.
-#include <iecoop/runtime/application.hpp>
 #include <iecoop/pou/global_variables.hpp>
+#include <iecoop/runtime/application.hpp>
 #include <iecoop/types/literals.hpp>
 
 using namespace iecoop;

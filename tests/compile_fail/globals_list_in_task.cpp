@@ -3,8 +3,8 @@
 // EXPECT: GVL_Plant
 // EXPECT-ERRORS: 1
 // `task<PLC_PRG, GVL_Plant>{...}`: a list is not called by a task; it is given in globals<GVL_Plant>{}.
-#include <iecoop/runtime/application.hpp>
 #include <iecoop/pou/global_variables.hpp>
+#include <iecoop/runtime/application.hpp>
 #include <iecoop/types/literals.hpp>
 
 using namespace iecoop;

@@ -3,8 +3,8 @@
 // EXPECT: GVL_Plant
 // EXPECT-ERRORS: 1
 // `application plc{task<...>{...}, GVL_Plant{}}`: a list is given in globals<GVL_Plant>{}.
-#include <iecoop/runtime/application.hpp>
 #include <iecoop/pou/global_variables.hpp>
+#include <iecoop/runtime/application.hpp>
 #include <iecoop/types/literals.hpp>
 
 using namespace iecoop;

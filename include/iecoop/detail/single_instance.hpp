@@ -71,8 +71,8 @@ class single_instance {
   /// The live instance (or, reporting a fault, a scratch one).
   static Self& instance() {
     if (live_ == nullptr) {
-      fault(fault_kind::invalid_value, listed_by_applications<Self> > 0 ? messages::not_started_text.data()
-                                                                         : messages::unlisted_text.data());
+      fault(fault_kind::invalid_value,
+            listed_by_applications<Self> > 0 ? messages::not_started_text.data() : messages::unlisted_text.data());
       return scratch();
     }
     return *live_;

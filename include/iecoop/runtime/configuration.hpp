@@ -152,10 +152,6 @@ struct entry_is_global_list : std::bool_constant<global_list_type<E>> {};
 template <class E>
 struct entry_is_program : std::bool_constant<program_type<E>> {};
 
-/// What a refusal names: `none<T>` fails for any T but void, and the compiler shows T.
-template <class T>
-inline constexpr bool none = std::is_void_v<T>;
-
 /// A program's VAR_EXTERNAL that names a list the application does not list (in a refusal).
 template <class Program, class List>
 struct VAR_EXTERNAL_not_in_globals {};

@@ -142,7 +142,7 @@ class task {
                 "iecoop: a task calls PROGRAMs, and a global variable list is none (the type in task<...>); give "
                 "the list to the application as globals<GVL>{}, beside the tasks");
   static_assert(
-      ((detail::program_type<Programs> || detail::global_list_type<Programs>) && ...),
+      ((detail::program_type<Programs> || detail::global_list_type<Programs>)&&...),
       "iecoop: a task calls PROGRAMs (types derived from iecoop::program<Self>); call function blocks from a program");
   static_assert(detail::all_distinct<Programs...>::value,
                 "iecoop: a task calls the same program twice; list each program once per task");
