@@ -56,8 +56,8 @@
 #include <iecoop/standard/timers.hpp>
 
 // sfc/: Sequential Function Charts, the language of steps and transitions (6.7)
+#include <iecoop/sfc/elements.hpp>  // before chart.hpp: a refused TRANSITION is two includes deep
 #include <iecoop/sfc/chart.hpp>
-#include <iecoop/sfc/elements.hpp>
 #include <iecoop/sfc/step.hpp>
 
 // io/: direct addresses, the process image, located variables, I/O drivers (6.5.5)

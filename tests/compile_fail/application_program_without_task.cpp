@@ -1,4 +1,7 @@
 // EXPECT: iecoop: a PROGRAM is assigned to no task
+// EXPECT: application_program_without_task.cpp:1[0-9]
+// EXPECT: LOG_PRG
+// EXPECT-ERRORS: 1
 // IEC's `PROGRAM Log : LOG_PRG;` without `WITH <task>`: the application would own a program
 // that never runs. Name it in a task.
 #include <iecoop/runtime/application.hpp>

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a variable of an enumeration starts at its first component in ST
 // EXPECT: E_Valve
+// EXPECT: enum_array_start_unknown.cpp:1[0-9]
 // EXPECT-ERRORS: 1
-// EXPECT-WITHIN: 16
 // The elements of an ARRAY OF an enumeration start at its first component (or at the type's
 // initial value, `TYPE E_Valve : (...) := Closed;`): iecoop needs one of the two declared.
 #include <iecoop/iecoop.hpp>

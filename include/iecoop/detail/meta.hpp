@@ -12,6 +12,11 @@ namespace iecoop::detail {
 template <class...>
 inline constexpr bool dependent_false = false;
 
+/// What a refusal names: `static_assert(none<T>, "...")` fails for any T but void, and the
+/// compiler shows T (the offending type, found by the template) beside the message.
+template <class T>
+inline constexpr bool none = std::is_void_v<T>;
+
 template <class... T>
 struct type_list {};
 

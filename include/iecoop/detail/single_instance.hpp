@@ -4,9 +4,43 @@
 // IWYU pragma: private, include <iecoop/pou/program.hpp>
 #pragma once
 
+#include <string_view>
+
+#include <iecoop/detail/type_name.hpp>
 #include <iecoop/fault.hpp>
 
 namespace iecoop::detail {
+
+/// How many live applications list T (a global variable list in globals<...>, a program in a
+/// task): tells instance() whether T is missing from every application or only not started.
+template <class T>
+inline int listed_by_applications = 0;
+
+/// The fault messages of single_instance<Self, ...>, naming Self and the fix.
+template <class Self, bool List>
+struct single_instance_messages {
+  static constexpr std::string_view name = short_type_name<Self>();
+  static constexpr std::string_view unlisted =
+      List ? ": no application lists this global variable list in globals<...> and no instance of it is declared; "
+             "add it to the application, as in application{..., globals<"
+           : ": no task of an application calls this PROGRAM and no instance of it is declared; name it in a "
+             "task of the application, as in application{task<";
+  static constexpr std::string_view unlisted_end =
+      List ? ">{}} (or declare its one instance yourself); a scratch instance stands in"
+           : ">{\"Main\", cyclic{\"T#10ms\"_iec}, 1}} (or declare its one instance yourself); a scratch instance "
+             "stands in";
+  static constexpr std::string_view not_started =
+      ": used while its application is stopped (before start() or after stop()); start() constructs it — a scratch "
+      "instance stands in";
+  static constexpr std::string_view duplicate =
+      List ? ": a global variable list has exactly one instance; this second one is not registered (an application "
+             "that lists it in globals<...> owns it: do not declare it too)"
+           : ": a PROGRAM has exactly one instance; this second one is not registered (an application whose task "
+             "calls it owns it: do not declare it too)";
+  static constexpr auto unlisted_text = joined_text<name, unlisted, name, unlisted_end>;
+  static constexpr auto not_started_text = joined_text<name, not_started>;
+  static constexpr auto duplicate_text = joined_text<name, duplicate>;
+};
 
 /// How many scratch instances are under construction: while one is, no program or global
 /// variable list (also one nested in it) registers as the live instance of its type.
@@ -26,16 +60,19 @@ class scratch_scope {
  * its type. Constructing a second while the first lives reports `duplicate` (with
  * `duplicate_message`) and leaves the first registered; copies (made by an online change)
  * are not registered. Without an instance, instance() reports fault_kind::invalid_value and
- * returns a scratch instance, which is never registered.
+ * returns a scratch instance, which is never registered. Each message names Self and the fix:
+ * an application that lists Self but is stopped, or none that lists it.
  */
 template <class Self, fault_kind Duplicate>
 class single_instance {
+  using messages = single_instance_messages<Self, Duplicate == fault_kind::duplicate_globals>;
+
  public:
   /// The live instance (or, reporting a fault, a scratch one).
   static Self& instance() {
     if (live_ == nullptr) {
       fault(fault_kind::invalid_value,
-            "used before its instance exists (a PROGRAM or global variable list); a scratch instance stands in");
+            listed_by_applications<Self> > 0 ? messages::not_started_text.data() : messages::unlisted_text.data());
       return scratch();
     }
     return *live_;
@@ -47,7 +84,7 @@ class single_instance {
   single_instance() {
     if (scratch_depth > 0) return;
     if (live_ != nullptr) {
-      fault(Duplicate, "a PROGRAM or global variable list has exactly one instance; this one is not registered");
+      fault(Duplicate, messages::duplicate_text.data());
       return;
     }
     // The destructor takes the registration back; GCC 12 at -O3 does not see that for an

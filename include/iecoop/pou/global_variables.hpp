@@ -12,7 +12,10 @@
 //
 // Give the list to an application (`globals<GVL_Plant>{}`), which constructs it at start(),
 // resets it with the programs and keeps its RETAIN and PERSISTENT values, or declare its one
-// instance yourself.
+// instance yourself. A program that names the lists it uses (ST's VAR_EXTERNAL:
+// `using VAR_EXTERNAL = iecoop::globals<GVL_Plant>;`) does not compile in an application
+// that lacks one of them; GVL_Plant::instance() without an instance reports a fault that
+// names the list and the fix.
 #pragma once
 
 #include <iecoop/config.hpp>
@@ -30,7 +33,11 @@ namespace iecoop {
  * fault_kind::invalid_value and returns a scratch instance.
  */
 template <class Self>
-class global_variables : public detail::single_instance<Self, fault_kind::duplicate_globals> {};
+class global_variables : public detail::single_instance<Self, fault_kind::duplicate_globals> {
+ public:
+  /// Marks a global variable list (for diagnostics that say "global variable list").
+  using iecoop_global_variables = void;
+};
 
 }  // namespace iecoop
 

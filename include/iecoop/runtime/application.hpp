@@ -39,6 +39,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
+#include <iecoop/detail/single_instance.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/io/driver.hpp>
 #include <iecoop/pou/lifecycle.hpp>
@@ -94,12 +95,30 @@ class application {
   using scheduler_type = iecoop::scheduler<config::task_count, cycles_type>;
 
   explicit application(Entries... entries) : scheduler_(config::task_settings_of(entries...), store_) {
+    static_assert(detail::none<typename config::program_outside_tasks>,
+                  "iecoop: a PROGRAM is assigned to no task (the program in none<...>); name it in a task "
+                  "(task<PRG>{\"Main\", cyclic{\"T#10ms\"_iec}, 1}) — a program that only other POUs call is "
+                  "declared as an ordinary variable");
+    static_assert(detail::none<typename config::list_outside_globals>,
+                  "iecoop: a global variable list is given to the application outside globals<...> (the list in "
+                  "none<...>); give it as globals<GVL>{}, as in application{task<...>{...}, globals<GVL>{}}");
+    static_assert(detail::none<typename config::external_not_globals>,
+                  "iecoop: a program's VAR_EXTERNAL names the global variable lists it uses as globals<...> (the "
+                  "program in none<...>); write using VAR_EXTERNAL = iecoop::globals<GVL_A, GVL_B>;");
+    static_assert(detail::none<typename config::external_not_in_globals>,
+                  "iecoop: a program uses a global variable list (its VAR_EXTERNAL) that the application does not "
+                  "list (the program and the list in none<...>); add the list to the application's globals<...>{}, as "
+                  "in application{task<...>{...}, globals<GVL>{}}");
     config::check_located_variables();
+    count_listed(1);
   }
   application(const application&) = delete;
   application& operator=(const application&) = delete;
   /// Stops the application (FB_Exit of every instance, retained data saved) if it runs.
-  ~application() { stop(); }
+  ~application() {
+    stop();
+    count_listed(-1);
+  }
 
   // --- Lifecycle --------------------------------------------------------------------
 
@@ -263,20 +282,20 @@ class application {
   /// after stop()) it reports fault_kind::invalid_value and yields a scratch instance.
   template <class T>
   [[nodiscard]] T& get() {
-    static_assert(config::template owns<T>,
-                  "iecoop: the application owns no instance of this type; name the program in a task, or the list in "
-                  "globals<...>");
-    if (constructed_) return store_.template get<T>();
-    if constexpr (requires { T::instance(); }) {
-      return T::instance();  // a program or global_variables<>: reports the fault, yields its scratch instance
+    if constexpr (!config::template owns<T>) {
+      if constexpr (detail::global_list_type<T>) {
+        static_assert(config::template owns<T>,
+                      "iecoop: the application does not list this global variable list (T); add it to the "
+                      "application, as in application{task<...>{...}, globals<GVL>{}}");
+      } else {
+        static_assert(config::template owns<T>,
+                      "iecoop: the application owns no instance of this type (T); name the program in a task, or the "
+                      "list in globals<...>");
+      }
+      return stand_in<T>();
     } else {
-      fault(fault_kind::invalid_value, "application::get before start(); a scratch instance stands in");
-      static T& scratch = []() -> T& {
-        detail::scratch_scope making;  // programs inside it do not become the live ones
-        static T instance;
-        return instance;
-      }();
-      return scratch;
+      if (constructed_) return store_.template get<T>();
+      return stand_in<T>();
     }
   }
 
@@ -351,6 +370,30 @@ class application {
     bool (*set_aside)(void*) = nullptr;                                   // optional
     std::size_t (*stored_size)(void*) = nullptr;                          // optional
   };
+
+  /// What get<T>() yields while no instance is constructed, reporting a fault.
+  template <class T>
+  static T& stand_in() {
+    if constexpr (requires { T::instance(); }) {
+      return T::instance();  // a program or global_variables<>: reports the fault, yields its scratch instance
+    } else {
+      fault(fault_kind::invalid_value, "application::get before start(); a scratch instance stands in");
+      static T& scratch = []() -> T& {
+        detail::scratch_scope making;  // programs inside it do not become the live ones
+        static T instance;
+        return instance;
+      }();
+      return scratch;
+    }
+  }
+
+  /// Tells each owned program and list that one more (`by` 1) or one fewer (-1) application
+  /// lists it, for the message of its instance() while none is constructed.
+  static void count_listed(int by) noexcept {
+    [by]<class... Owned>(detail::type_list<Owned...>) {
+      ((detail::listed_by_applications<Owned> += by), ...);
+    }(typename config::owned_list{});
+  }
 
   void construct(bool init_retains) {
     image::clear();

@@ -65,11 +65,9 @@ struct entry<retain_capacity<N>> {
 template <class E>
 constexpr void check_entry() {
   using e = entry<E>;
-  if constexpr (!(e::is_task || e::is_globals || e::is_image || e::is_capacity)) {
-    static_assert(!program_type<E>,
-                  "iecoop: a PROGRAM is assigned to no task; name it in a task (task<PRG>{\"Main\", "
-                  "cyclic{\"T#10ms\"_iec}, 1}) — "
-                  "a program that only other POUs call is declared as an ordinary variable");
+  if constexpr (global_list_type<E> || program_type<E>) {
+    // reported by the application's constructor, naming the type (first_outside<...>)
+  } else if constexpr (!(e::is_task || e::is_globals || e::is_image || e::is_capacity)) {
     static_assert(
         program_type<E>,
         "iecoop: an application is made of task<...>{...}, globals<...>{}, use_image<...>{} and retain_capacity<N>{}");
@@ -139,6 +137,81 @@ struct located_check<Image, type_list<Objects...>> {
   }
 };
 
+// The first entry that is a Kind (a global variable list given as it is, not in globals<...>{};
+// a program given as it is, in no task), void if none: the application's constructor names it
+// in its refusal.
+template <template <class> class Kind, class... Es>
+struct first_given_as_is {
+  using type = void;
+};
+template <template <class> class Kind, class E, class... Es>
+struct first_given_as_is<Kind, E, Es...>
+    : std::conditional_t<Kind<E>::value, std::type_identity<E>, first_given_as_is<Kind, Es...>> {};
+template <class E>
+struct entry_is_global_list : std::bool_constant<global_list_type<E>> {};
+template <class E>
+struct entry_is_program : std::bool_constant<program_type<E>> {};
+
+/// A program's VAR_EXTERNAL that names a list the application does not list (in a refusal).
+template <class Program, class List>
+struct VAR_EXTERNAL_not_in_globals {};
+/// A program's VAR_EXTERNAL that is not globals<...> (in a refusal).
+template <class Program, class External>
+struct VAR_EXTERNAL_not_globals {};
+
+// A program's VAR_EXTERNAL (`using VAR_EXTERNAL = globals<GVL_A, GVL_B>;`, the global variable
+// lists it uses, as ST's VAR_EXTERNAL names the global variables): `type` is the first fault
+// in it against the lists `Listed` (a type_list), void if none.
+template <class Listed, class Program, class External>
+struct external_fault {
+  using type = VAR_EXTERNAL_not_globals<Program, External>;
+};
+template <class Listed, class Program>
+struct external_fault<Listed, Program, void> {
+  using type = void;
+};
+template <class Program, class... Listed, class... Lists>
+struct external_fault<type_list<Listed...>, Program, globals<Lists...>> {
+  template <class... Ls>
+  struct first {
+    using type = void;
+  };
+  template <class L, class... Ls>
+  struct first<L, Ls...> : std::conditional_t<occurs_in<L, Listed...>, first<Ls...>,
+                                              std::type_identity<VAR_EXTERNAL_not_in_globals<Program, L>>> {};
+  using type = typename first<Lists...>::type;
+};
+template <class Fault, bool NotInGlobals>
+struct external_kind {
+  using type = void;
+};
+template <class P, class L>
+struct external_kind<VAR_EXTERNAL_not_in_globals<P, L>, true> {
+  using type = VAR_EXTERNAL_not_in_globals<P, L>;
+};
+template <class P, class X>
+struct external_kind<VAR_EXTERNAL_not_globals<P, X>, false> {
+  using type = VAR_EXTERNAL_not_globals<P, X>;
+};
+template <class P>
+struct external_of {
+  using type = void;
+};
+template <class P>
+  requires requires { typename P::VAR_EXTERNAL; }
+struct external_of<P> {
+  using type = typename P::VAR_EXTERNAL;
+};
+template <class Listed, class... Owned>
+struct first_external_fault {
+  using type = void;
+};
+template <class Listed, class O, class... Owned>
+struct first_external_fault<Listed, O, Owned...>
+    : std::conditional_t<std::is_void_v<typename external_fault<Listed, O, typename external_of<O>::type>::type>,
+                         first_external_fault<Listed, Owned...>,
+                         external_fault<Listed, O, typename external_of<O>::type>> {};
+
 /// An application's configuration, `Entries...` as given to application{...}.
 template <class... Entries>
 struct configuration {
@@ -164,6 +237,11 @@ struct configuration {
   static constexpr bool owns =
       [] { return []<class... Ts>(type_list<Ts...>) { return occurs_in<T, Ts...>; }(owned_list{}); }();
 
+  /// Whether T is one of the application's global variable lists.
+  template <class T>
+  static constexpr bool lists =
+      [] { return []<class... Ts>(type_list<Ts...>) { return occurs_in<T, Ts...>; }(globals_list{}); }();
+
   /// The tasks' settings, in configuration order.
   static std::array<task_settings, task_count> task_settings_of(const Entries&... entries) noexcept {
     static_assert(entries_valid);
@@ -179,6 +257,20 @@ struct configuration {
 
   /// The checks of the located variables of every owned instance (all in the image).
   static constexpr void check_located_variables() { located_check<image, owned_list>::run(); }
+
+  /// The first global variable list given outside globals<...>{}, void if none.
+  using list_outside_globals = typename first_given_as_is<entry_is_global_list, Entries...>::type;
+  /// The first program given as it is, in no task, void if none.
+  using program_outside_tasks = typename first_given_as_is<entry_is_program, Entries...>::type;
+  /// The first fault in a program's VAR_EXTERNAL, void if none: VAR_EXTERNAL_not_globals<P, X>
+  /// or VAR_EXTERNAL_not_in_globals<P, GVL>.
+  using external_fault = typename decltype([]<class... Owned>(type_list<Owned...>) {
+    return std::type_identity<typename first_external_fault<globals_list, Owned...>::type>{};
+  }(owned_list{}))::type;
+  /// That fault if it is a list the application does not list, void otherwise.
+  using external_not_in_globals = typename external_kind<external_fault, true>::type;
+  /// That fault if the VAR_EXTERNAL is not globals<...>, void otherwise.
+  using external_not_globals = typename external_kind<external_fault, false>::type;
 };
 
 }  // namespace detail

@@ -120,6 +120,10 @@ namespace detail {
 template <class P>
 concept program_type = std::is_base_of_v<program<P>, P>;
 
+/// A global variable list (derived from global_variables<G>, <iecoop/pou/global_variables.hpp>).
+template <class G>
+concept global_list_type = requires { typename G::iecoop_global_variables; };
+
 }  // namespace detail
 
 /**
@@ -134,8 +138,11 @@ concept program_type = std::is_base_of_v<program<P>, P>;
 template <class... Programs>
 class task {
   static_assert(sizeof...(Programs) > 0, "iecoop: a task calls at least one program; name them: task<PLC_PRG>{...}");
+  static_assert(!(detail::global_list_type<Programs> || ...),
+                "iecoop: a task calls PROGRAMs, and a global variable list is none (the type in task<...>); give "
+                "the list to the application as globals<GVL>{}, beside the tasks");
   static_assert(
-      (detail::program_type<Programs> && ...),
+      ((detail::program_type<Programs> || detail::global_list_type<Programs>)&&...),
       "iecoop: a task calls PROGRAMs (types derived from iecoop::program<Self>); call function blocks from a program");
   static_assert(detail::all_distinct<Programs...>::value,
                 "iecoop: a task calls the same program twice; list each program once per task");

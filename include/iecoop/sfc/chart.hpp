@@ -153,25 +153,39 @@ inline constexpr bool valid_action =
     bool_member<decltype(Action)>::value ||
     (std::is_member_function_pointer_v<decltype(Action)> && std::is_invocable_v<decltype(Action), POU&>);
 
+/// Whether Condition is a BOOL condition on the complete POU: `true`, or a member, a method or
+/// a callable whose result converts to BOOL (elements.hpp's bool_result: no number does).
 template <class POU, auto Condition>
 consteval bool valid_condition() noexcept {
   using C = decltype(Condition);
   if constexpr (std::is_same_v<C, bool>) {
     return true;
-  } else if constexpr (std::is_member_object_pointer_v<C>) {
-    return std::is_constructible_v<bool, std::invoke_result_t<C, POU&>>;
   } else if constexpr (std::is_invocable_v<C, POU&>) {
-    return std::is_constructible_v<bool, std::invoke_result_t<C, POU&>>;
+    return bool_result<std::invoke_result_t<C, POU&>>;
   } else {
     return false;
   }
 }
+
+/// The first of the transitions `Trs` (a type_list) whose condition is no BOOL on the complete
+/// POU, void if none: a generic callable (`[](auto& p) {...}`), which the TRANSITION could
+/// not check where it is declared.
+template <class POU, class Trs>
+struct first_non_bool_condition {
+  using type = void;
+};
+template <class POU, class Tr, class... Trs>
+struct first_non_bool_condition<POU, type_list<Tr, Trs...>>
+    : std::conditional_t<valid_condition<POU, Tr::condition>(), first_non_bool_condition<POU, type_list<Trs...>>,
+                         std::type_identity<Tr>> {};
 
 template <auto Condition, class POU>
 bool test(POU& pou) {
   using C = decltype(Condition);
   if constexpr (std::is_same_v<C, bool>) {
     return Condition;
+  } else if constexpr (!valid_condition<POU, Condition>()) {
+    return false;  // refused by the chart's operator() (no second error here)
   } else if constexpr (std::is_member_object_pointer_v<C>) {
     return static_cast<bool>(pou.*Condition);
   } else if constexpr (std::is_member_function_pointer_v<C>) {
@@ -212,13 +226,6 @@ consteval void invalid_action() {
                 "iecoop: an SFC action is a member function of the POU without parameters (an ACTION) or a BOOL member "
                 "(the action in the template argument is neither)");
 }
-template <auto Condition>
-consteval void invalid_condition() {
-  static_assert(iecoop::detail::dependent_false<action_tag<Condition>>,
-                "iecoop: a TRANSITION's condition is a BOOL member, a member function returning BOOL, a callable "
-                "taking the POU (`[](auto& p) { return p.GO; }`) or true");
-}
-
 inline constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
 /// The control of one IEC action (IEC 61131-3 ACTION_CONTROL, combined over its associations).
@@ -335,7 +342,6 @@ class chart {
 
   template <class Tr>
   static consteval bool check_transition() {
-    if constexpr (!detail::valid_condition<POU, Tr::condition>()) detail::invalid_condition<Tr::condition>();
     check_ends(static_cast<typename Tr::from*>(nullptr));
     check_ends(static_cast<typename Tr::to*>(nullptr));
     return true;
@@ -474,6 +480,10 @@ class chart {
 
   /// One scan of the chart on `pou` (the POU the chart is a member of), at the cycle clock's time.
   void operator()(POU& pou) {
+    static_assert(iecoop::detail::none<typename detail::first_non_bool_condition<POU, transitions>::type>,
+                  "iecoop: a TRANSITION's condition is a BOOL; the callable of the transition in none<...> (named by "
+                  "its FROM and TO steps) yields a number or another type — compare it: [](auto& p) { return "
+                  "p.nCount != 0; } (ST: nCount <> 0)");
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
     TIME elapsed = started_ ? TIME(now - last_) : TIME{};

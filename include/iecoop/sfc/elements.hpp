@@ -21,6 +21,7 @@
 #include <iecoop/detail/fixed_string.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/sfc/step.hpp>
+#include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literals.hpp>
 #include <iecoop/types/time.hpp>
 
@@ -241,6 +242,139 @@ consteval int priority_of() noexcept {
 }
 }  // namespace detail
 
+namespace detail {
+
+/// What a transition's condition yields, where its type tells it while the POU is still
+/// incomplete (inside its class): `type` is that result, `known` FALSE for a generic callable
+/// (`[](auto& p) {...}`), which the chart checks where it runs (chart(*this)).
+template <class C>
+struct condition_result {
+  static constexpr bool known = false;
+  static constexpr bool callable = false;
+  using type = void;
+};
+template <class M, class P>
+struct condition_result<M P::*> {
+  static constexpr bool known = true;
+  static constexpr bool callable = true;
+  using type = M&;
+};
+template <class R, class P>
+struct condition_result<R (P::*)()> {
+  static constexpr bool known = true;
+  static constexpr bool callable = true;
+  using type = R;
+};
+template <class R, class P>
+struct condition_result<R (P::*)() const> {
+  static constexpr bool known = true;
+  static constexpr bool callable = true;
+  using type = R;
+};
+template <class R, class P>
+struct condition_result<R (P::*)() noexcept> {
+  static constexpr bool known = true;
+  static constexpr bool callable = true;
+  using type = R;
+};
+template <class R, class P>
+struct condition_result<R (P::*)() const noexcept> {
+  static constexpr bool known = true;
+  static constexpr bool callable = true;
+  using type = R;
+};
+template <class R, class P>
+struct condition_result<R (*)(P&)> {
+  static constexpr bool known = true;
+  static constexpr bool callable = true;
+  using type = R;
+};
+template <class R, class P>
+struct condition_result<R (*)(P&) noexcept> : condition_result<R (*)(P&)> {};
+template <class C>
+  requires std::is_class_v<C>
+struct condition_result<C> {
+  // A callable with one operator() (a lambda taking the POU by its type): its result is known;
+  // a generic one (`auto& p`) is checked by the chart.
+  template <class F>
+  struct call {
+    static constexpr bool known = false;
+    using type = void;
+  };
+  template <class F>
+    requires requires { &F::operator(); }
+  struct call<F> {
+    template <class M>
+    struct result_of;
+    template <class R, class F2, class... A>
+    struct result_of<R (F2::*)(A...) const> {
+      using type = R;
+    };
+    template <class R, class F2, class... A>
+    struct result_of<R (F2::*)(A...) const noexcept> {
+      using type = R;
+    };
+    template <class R, class F2, class... A>
+    struct result_of<R (F2::*)(A...)> {
+      using type = R;
+    };
+    template <class R, class F2, class... A>
+    struct result_of<R (F2::*)(A...) noexcept> {
+      using type = R;
+    };
+    static constexpr bool known = true;
+    using type = typename result_of<decltype(&F::operator())>::type;
+  };
+  static constexpr bool known = call<C>::known;
+  static constexpr bool callable = true;
+  using type = typename call<C>::type;
+};
+
+/// Whether a condition's result is a BOOL: bool, BOOL, a BOOL variable (a member, read_only<>,
+/// a step's X) or a bit — anything that converts to BOOL, which no number does (INT, REAL,
+/// int or double: compare them, `p.nCount != 0`).
+template <class R>
+inline constexpr bool bool_result = std::is_convertible_v<R, BOOL>;
+
+/// Condition, checked where the TRANSITION is declared, with the transition's arguments.
+template <class From, class To, auto Condition, class... Options>
+consteval auto checked_transition() {
+  static_assert(detail::is_from<From>::value,
+                "iecoop: a TRANSITION's first argument is its source steps; write sfc::FROM<&P::S1> or "
+                "sfc::FROM<&P::P2, &P::Q2>");
+  static_assert(detail::is_to<To>::value,
+                "iecoop: a TRANSITION's second argument is its target steps; write sfc::TO<&P::S2> or "
+                "sfc::TO<&P::P1, &P::Q1>");
+  static_assert((detail::is_priority<Options>::value && ...) && sizeof...(Options) <= 1,
+                "iecoop: a TRANSITION's only option is its priority; write sfc::PRIORITY<1> after the condition");
+  using C = decltype(Condition);
+  using result = condition_result<C>;
+  constexpr bool bool_condition =
+      std::is_same_v<C, bool> || (result::callable && (!result::known || bool_result<typename result::type>));
+  static_assert(bool_condition,
+                "iecoop: a TRANSITION's condition is a BOOL; this one (the third template argument) yields a number "
+                "or another type — compare it: [](auto& p) { return p.nCount != 0; } (ST: nCount <> 0), or name a "
+                "BOOL member (&P::bDone) or a method returning BOOL");
+  if constexpr (bool_condition) {
+    return Condition;
+  } else {
+    return true;  // a valid condition in its place: one error, not a second one in the chart
+  }
+}
+
+template <class From, class To, auto Condition, class... Options>
+struct transition {
+  static_assert(From::size > 0, "iecoop: a TRANSITION needs a source step; write sfc::FROM<&P::S1>");
+  static_assert(To::size > 0, "iecoop: a TRANSITION needs a target step; write sfc::TO<&P::S2>");
+  static constexpr detail::element_kind iecoop_sfc_element = detail::element_kind::transition;
+  using from = From;
+  using to = To;
+  static constexpr auto condition = Condition;
+  static constexpr int priority = detail::priority_of<Options...>();
+};
+
+}  // namespace detail
+
 /**
  * `TRANSITION FROM FILL TO PULSE := <condition>; END_TRANSITION`.
  *
@@ -249,25 +383,15 @@ consteval int priority_of() noexcept {
  * taking the POU (`[](auto& p) { return p.FILL.T >= 50ms; }`; a duration in it as a chrono literal:
  * Clang 14 with UBSan crashes on an "..."_iec literal there), or `true`. The option
  * `sfc::PRIORITY<n>` is ST's `(PRIORITY := n)`.
+ *
+ * A condition that is no BOOL (an INT member, a method or lambda returning a number) does not
+ * compile: ST's `nCount <> 0` is `[](auto& p) { return p.nCount != 0; }`. It is refused here,
+ * where the transition is declared; a generic callable (`auto& p`), whose result only the
+ * complete POU tells, is refused where the chart runs (`chart(*this)`).
  */
 template <class From, class To, auto Condition, class... Options>
-struct TRANSITION {
-  static_assert(detail::is_from<From>::value,
-                "iecoop: a TRANSITION's first argument is its source steps; write sfc::FROM<&P::S1> or "
-                "sfc::FROM<&P::P2, &P::Q2>");
-  static_assert(detail::is_to<To>::value,
-                "iecoop: a TRANSITION's second argument is its target steps; write sfc::TO<&P::S2> or "
-                "sfc::TO<&P::P1, &P::Q1>");
-  static_assert(From::size > 0, "iecoop: a TRANSITION needs a source step; write sfc::FROM<&P::S1>");
-  static_assert(To::size > 0, "iecoop: a TRANSITION needs a target step; write sfc::TO<&P::S2>");
-  static_assert((detail::is_priority<Options>::value && ...) && sizeof...(Options) <= 1,
-                "iecoop: a TRANSITION's only option is its priority; write sfc::PRIORITY<1> after the condition");
-  static constexpr detail::element_kind iecoop_sfc_element = detail::element_kind::transition;
-  using from = From;
-  using to = To;
-  static constexpr auto condition = Condition;
-  static constexpr int priority = detail::priority_of<Options...>();
-};
+using TRANSITION =
+    detail::transition<From, To, detail::checked_transition<From, To, Condition, Options...>(), Options...>;
 
 }  // namespace iecoop::sfc
 

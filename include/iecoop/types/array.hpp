@@ -162,10 +162,20 @@ struct started_elements<T, N, std::index_sequence<I...>> {
   constexpr T& operator[](std::size_t i) noexcept { return values[i]; }
   constexpr const T& operator[](std::size_t i) const noexcept { return values[i]; }
 };
+/// starts_nonzero<T>(), but FALSE for an enumeration whose start iecoop does not know (which
+/// the ARRAY refuses itself, at its declaration).
+template <class T>
+constexpr bool array_starts_nonzero() noexcept {
+  if constexpr (std::is_enum_v<T> && !knows_enum_start<T>) {
+    return false;
+  } else {
+    return starts_nonzero<T>();
+  }
+}
 /// An ARRAY's element storage: a built-in array, value-initialised (0, and the IEC types' own
 /// initial values), or started_elements where that is not ST's initial value.
 template <class T, std::size_t N>
-using array_elements = std::conditional_t<starts_nonzero<T>(), started_elements<T, N>, T[N]>;
+using array_elements = std::conditional_t<array_starts_nonzero<T>(), started_elements<T, N>, T[N]>;
 
 /// `N(value)` of an ST initialiser: the value N times.
 template <std::size_t N, class V>
@@ -320,6 +330,12 @@ struct basic_array {
                 "iecoop: an ARRAY's lower bound must not exceed its upper bound; write ARRAY[lower..upper]");
   static_assert(!std::is_reference_v<T> && !std::is_const_v<T> && !std::is_array_v<T>,
                 "iecoop: an ARRAY's elements are variables; for ARRAY OF ARRAY write ARRAY<ARRAY<T, 1, 3>, 1, 2>");
+  // Here, not where the elements start: the error's context is the ARRAY's declaration.
+  static_assert(!std::is_enum_v<T> || detail::knows_enum_start<T>,
+                "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
+                "from the enumeration's declared components (the enumeration is the ARRAY's element type); declare "
+                "them, first component first: template <> inline constexpr auto iecoop::enum_components<E> = "
+                "iecoop::components<E::A, E::B>{}; (or the type's initial value, enum_initial<E>)");
   static_assert((detail::require_st_start<T>(), true));  // its own static_assert says what is wrong
 
  public:

@@ -1,0 +1,28 @@
+// EXPECT: iecoop: a TRANSITION's condition is a BOOL; this one \(the third template argument\) yields a number
+// EXPECT: sfc_condition_int_member.cpp:17
+// EXPECT-ERRORS: 1
+// ST `TRANSITION FROM FILL TO DRAIN := nCount; END_TRANSITION` with nCount : INT (refused in ST too): compare it.
+#include <iecoop/iecoop.hpp>
+
+#include "sfc_chart_fixture.hpp"
+using namespace iecoop;
+struct FB_Count : function_block<FB_Count>, sfc_fixture::tank_variables {
+  INT nCount;
+  REAL rLevel;
+  INT T_Count() { return nCount; }
+  using P = FB_Count;
+  sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,
+             sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>,
+#ifdef IECOOP_COMPILE_FAIL
+             sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, &P::nCount>,
+#else
+             sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, [](auto& p) { return p.nCount != 0; }>,
+#endif
+             sfc::STEP<&P::DRAIN>, sfc::TRANSITION<sfc::FROM<&P::DRAIN>, sfc::TO<&P::INIT>, true>>
+      chart;
+  void body() { chart(*this); }
+};
+int main() {
+  FB_Count fb;
+  fb();
+}

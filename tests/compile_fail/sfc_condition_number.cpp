@@ -1,0 +1,28 @@
+// EXPECT: iecoop: a TRANSITION's condition is a BOOL; this one \(the third template argument\) yields a number
+// EXPECT: sfc_condition_number.cpp:17
+// EXPECT-ERRORS: 1
+// A number as a transition's condition (ST `:= 1;`): write TRUE (`true`).
+#include <iecoop/iecoop.hpp>
+
+#include "sfc_chart_fixture.hpp"
+using namespace iecoop;
+struct FB_Count : function_block<FB_Count>, sfc_fixture::tank_variables {
+  INT nCount;
+  REAL rLevel;
+  INT T_Count() { return nCount; }
+  using P = FB_Count;
+  sfc::chart<P, sfc::INITIAL_STEP<&P::INIT>, sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::GO>,
+             sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>>,
+#ifdef IECOOP_COMPILE_FAIL
+             sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, 1>,
+#else
+             sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::DRAIN>, true>,
+#endif
+             sfc::STEP<&P::DRAIN>, sfc::TRANSITION<sfc::FROM<&P::DRAIN>, sfc::TO<&P::INIT>, true>>
+      chart;
+  void body() { chart(*this); }
+};
+int main() {
+  FB_Count fb;
+  fb();
+}
