@@ -30,6 +30,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/reflect.hpp>
+#include <iecoop/pou/attributes.hpp>
 #include <iecoop/types/elementary.hpp>  // first: its diagnostics stay near the top of the compiler's output
 #include <iecoop/types/enumeration.hpp>
 
@@ -216,6 +217,14 @@ constexpr T stand_in_value() {
   } else {
     return T();
   }
+}
+
+/// Sets a stand-in variable back to stand_in_value<T>() before it is handed out again. A block
+/// declared no_assign (pou/attributes.hpp) is not assigned: it keeps what the last user of the
+/// stand-in wrote.
+template <class T>
+constexpr void refresh_stand_in(T& stand_in) {
+  if constexpr (!refuses_assignment<T>()) stand_in = stand_in_value<T>();
 }
 
 /// T's initial value is not all zero bytes: a variable of T must be set where C++ zeroes it.

@@ -33,6 +33,7 @@
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/pou/attributes.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/interface.hpp>
 #include <iecoop/pou/named_arguments.hpp>
@@ -193,6 +194,35 @@ namespace detail {
 
 template <class B>
 concept has_body = requires(B& b) { block_access::body(b); };
+
+// A class with a member named body: derived together with a block, the name is ambiguous
+// exactly when the block has a member of that name (of any access, a template or overloads).
+struct body_name {
+  int body;
+};
+template <class B>
+struct body_name_probe : B, body_name {};
+/// B has a member named body (its own or inherited), whatever its access.
+template <class B>
+constexpr bool names_body() noexcept {
+  if constexpr (std::is_final_v<B>) {
+    return has_body<B> || requires { &B::body; };
+  } else {
+    return !requires { &body_name_probe<B>::body; };
+  }
+}
+
+/// No level of B, from B down to the block that extends nothing, has a body of its own (ST:
+/// each level's implementation is empty): B is only extended, never called.
+template <class B>
+constexpr bool bodiless() noexcept {
+  using base = typename base_of<B>::type;
+  if constexpr (std::is_void_v<base>) {
+    return !names_body<B>();
+  } else {
+    return !block_access::declares_own_body<B>() && bodiless<base>();
+  }
+}
 
 template <class B, class Pins, std::size_t... I>
 constexpr bool all_bound(const B& block, std::index_sequence<I...>) {
@@ -367,6 +397,12 @@ constexpr void report_invalid_call() {
       static_assert(has_body<B>,
                     "iecoop: a PROGRAM needs its code as `void body()` (public, or private with "
                     "`friend struct iecoop::block_access;`); write `void body() {}` for an empty implementation");
+    } else if constexpr (bodiless<B>() && (std::is_polymorphic_v<B> || !std::is_void_v<typename base_of<B>::type>)) {
+      static_assert(has_body<B>,
+                    "iecoop: the block has no body on any level (an ABSTRACT block whose implementation is empty), "
+                    "so it is only extended: C++ cannot dispatch a call of it, nor one through a reference to it, to "
+                    "the body of the block extending it; call that block, or give this one its empty body "
+                    "`virtual void body() {}` (`void body() override {}` in a block that EXTENDS another)");
     } else if constexpr (!std::is_void_v<typename base_of<B>::type>) {
       static_assert(has_body<B>,
                     "iecoop: a block that EXTENDS another states its own body, as CODESYS does not run the base's "
@@ -473,12 +509,19 @@ constexpr B& assign_initial_values(B& block, A&&... arguments) {
 }
 
 /// The two ways to call a block `Self`, and with(): what function_block<> and extends<> add.
-template <class Self>
+/// `Attributes` are Self's own attribute pragmas (pou/attributes.hpp).
+template <class Self, class Attributes = attributes<>>
 class block_calls {
  public:
   /// ST: `inst();` — runs the body with the inputs as they are.
   void operator()() {
-    if constexpr (call_is_valid<Self>()) {
+    if constexpr (lists_attribute<Attributes, no_explicit_call>) {
+      static_assert(
+          dependent_false<Self>,
+          "iecoop: the block is declared no_explicit_call ({attribute 'no_explicit_call'}), so its instance is "
+          "not called (ST: inst(); CODESYS error C0554); use its methods and properties, or call a block "
+          "that extends it, or drop no_explicit_call from the block's attributes<>");
+    } else if constexpr (call_is_valid<Self>()) {
       call_valid_block(self());
     } else {
       report_invalid_call<Self>();
@@ -491,7 +534,13 @@ class block_calls {
   template <NamedArgument... A>
     requires(sizeof...(A) > 0)
   void operator()(A&&... arguments) {
-    if constexpr (call_is_valid<Self, A...>()) {
+    if constexpr (lists_attribute<Attributes, no_explicit_call>) {
+      static_assert(
+          dependent_false<Self>,
+          "iecoop: the block is declared no_explicit_call ({attribute 'no_explicit_call'}), so its instance is "
+          "not called (ST: inst(); CODESYS error C0554); use its methods and properties, or call a block "
+          "that extends it, or drop no_explicit_call from the block's attributes<>");
+    } else if constexpr (call_is_valid<Self, A...>()) {
       call_valid_block(self(), std::forward<A>(arguments)...);
     } else {
       report_invalid_call<Self, A...>();
@@ -509,23 +558,72 @@ class block_calls {
   Self& self() noexcept { return static_cast<Self&>(*this); }
 };
 
+/// The first of Options... for which Is<Option>::value holds, else Default.
+template <template <class> class Is, class Default, class... Options>
+struct first_option {
+  using type = Default;
+};
+template <template <class> class Is, class Default, class O, class... Options>
+struct first_option<Is, Default, O, Options...> {
+  using type = std::conditional_t<Is<O>::value, O, typename first_option<Is, Default, Options...>::type>;
+};
+
+/// What a block's declaration lists after the block (and the block it extends): its
+/// interfaces as implements<I...> and its attribute pragmas as attributes<...>, each at most once.
+template <class... Options>
+struct block_options {
+  static_assert(((is_implements<Options>::value || is_attributes<Options>::value) && ...) &&
+                    (std::size_t{0} + ... + std::size_t{is_implements<Options>::value}) <= 1 &&
+                    (std::size_t{0} + ... + std::size_t{is_attributes<Options>::value}) <= 1,
+                "iecoop: a block's declaration lists its interfaces as implements<I...> and its attribute pragmas as "
+                "attributes<...>, each once: function_block<FB, implements<I_A, I_B>, attributes<no_assign>>, "
+                "extends<FB2, FB1, implements<I_C>>");
+  using interfaces = typename first_option<is_implements, implements<>, Options...>::type;
+  using attributes = typename first_option<is_attributes, iecoop::attributes<>, Options...>::type;
+  static_assert(known_attributes<attributes>,
+                "iecoop: attributes<...> lists no_explicit_call and no_assign (the attribute pragmas of a block that "
+                "iecoop checks); leave out the others: see the porting guide for what each becomes");
+};
+
 }  // namespace detail
 
 /**
  * The base of a FUNCTION_BLOCK `Self` (CRTP): `struct FB : iecoop::function_block<FB>`, or
- * `function_block<FB, implements<I_A, I_B>>` for `FUNCTION_BLOCK FB IMPLEMENTS I_A, I_B`.
+ * `function_block<FB, implements<I_A, I_B>>` for `FUNCTION_BLOCK FB IMPLEMENTS I_A, I_B`;
+ * its attribute pragmas follow as `attributes<no_explicit_call, no_assign>` (pou/attributes.hpp).
  *
  * `Self` provides `void body()` (the block's code) and, to be callable with named
  * parameters, lists its interface as `using VAR_INPUT = iecoop::pins<...>` (likewise
  * VAR_OUTPUT and VAR_IN_OUT). Inside the block, `var<T>` declares a local (VAR).
  */
-template <class Self, class Interfaces = implements<>>
-class function_block : public detail::interface_layer_t<Self, detail::no_block<Self>, Interfaces>,
-                       public detail::block_calls<Self> {
+template <class Self, class... Options>
+class function_block : public detail::interface_layer_t<Self, detail::no_block<Self>,
+                                                        typename detail::block_options<Options...>::interfaces>,
+                       public detail::block_calls<Self, typename detail::block_options<Options...>::attributes> {
  public:
   /// VAR ... END_VAR inside Self: readable from outside, written only by Self.
   template <class T>
   using var = local<T, Self>;
+  /// The attribute pragmas of Self's declaration.
+  using iecoop_attributes = typename detail::block_options<Options...>::attributes;
+
+  function_block() = default;
+  function_block(const function_block&) = default;
+  function_block& operator=(const function_block&)
+    requires(!detail::lists_attribute<iecoop_attributes, no_assign>)
+  = default;
+  // Declared no_assign: the assignment of a Self (which calls this one) does not compile. Also
+  // taken for a move assignment. (The deduced return type has the compilers report it where
+  // the assignment is written.)
+  auto& operator=(const function_block&)
+    requires(detail::lists_attribute<iecoop_attributes, no_assign>)
+  {
+    static_assert(detail::dependent_false<Self>,
+                  "iecoop: the block is declared no_assign ({attribute 'no_assign'}), so one instance of it is not "
+                  "assigned to another (ST: fbA := fbB;); assign the variables meant to be copied one by one, or "
+                  "drop no_assign from the block's attributes<>");
+    return *this;
+  }
 };
 
 /// A FUNCTION_BLOCK type (made with function_block<> or extends<>).

@@ -39,6 +39,7 @@
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/detail/reflect.hpp>
 #include <iecoop/detail/type_hash.hpp>
+#include <iecoop/pou/attributes.hpp>
 #include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/interface.hpp>
 #include <iecoop/pou/method.hpp>
@@ -512,6 +513,9 @@ template <class T, class... A>
 T& online_change(T& old_instance, void* storage, A&&... args) noexcept {
   static_assert(std::is_copy_assignable_v<T> && std::is_copy_constructible_v<T>,
                 "iecoop: an online change copies the instance; the block must be copyable");
+  static_assert(!detail::refuses_assignment<T>(),
+                "iecoop: online_change copies the old instance into the new one by assignment, which a block "
+                "declared no_assign refuses; relocate it with reset() (its values start anew), or drop no_assign");
   alignas(T) unsigned char saved_storage[sizeof(T)];
   T* saved = std::construct_at(reinterpret_cast<T*>(saved_storage), std::as_const(old_instance));
   {
@@ -525,7 +529,7 @@ T& online_change(T& old_instance, void* storage, A&&... args) noexcept {
   }
   {
     detail::lifecycle_scope copying({false, true, false, true});
-    *fresh = *saved;
+    if constexpr (!detail::refuses_assignment<T>()) *fresh = *saved;
   }
   if constexpr (detail::has_fb_reinit<T>) block_access::fb_reinit(*fresh);
   {

@@ -371,7 +371,7 @@ class in_out : public detail::condition_conversion<in_out<T>, std::remove_const_
     fault(fault_kind::unbound_in_out, "VAR_IN_OUT used before it was bound to a variable");
     if constexpr (std::is_default_constructible_v<value_type> && std::is_copy_assignable_v<value_type>) {
       static value_type scratch = detail::stand_in_value<value_type>();
-      scratch = detail::stand_in_value<value_type>();
+      detail::refresh_stand_in(scratch);
       return scratch;
     } else {
       // No stand-in can be made for this type (an abstract block, a block with FB_Init
@@ -474,7 +474,7 @@ class in_out<basic_array<Check, T, Stars...>> {
   static T& unbound() {
     fault(fault_kind::unbound_in_out, "VAR_IN_OUT ARRAY[*] used before it was bound to an ARRAY");
     static T scratch = detail::stand_in_value<T>();
-    scratch = detail::stand_in_value<T>();
+    detail::refresh_stand_in(scratch);
     return scratch;
   }
 

@@ -129,7 +129,7 @@ class POINTER_TO {
     using V = std::remove_const_t<T>;
     if constexpr (std::is_default_constructible_v<V> && std::is_copy_assignable_v<V>) {
       static V stand_in = detail::stand_in_value<V>();
-      stand_in = detail::stand_in_value<V>();
+      detail::refresh_stand_in(stand_in);
       return stand_in;
     } else {
       std::abort();  // no stand-in can be made for this type (an abstract block)
