@@ -10,6 +10,10 @@
 #include <iecoop/fault.hpp>
 
 // types/: the elementary data types, their literals and conversions (IEC 61131-3 6.3, 6.4)
+// (enumeration.hpp and initial_value.hpp first: a refused start value is then reported one
+// include deep, which keeps the user's own line within the first lines of clang's report)
+#include <iecoop/types/enumeration.hpp>
+#include <iecoop/detail/initial_value.hpp>  // IWYU pragma: keep
 #include <iecoop/types/array.hpp>
 #include <iecoop/types/bit_access.hpp>
 #include <iecoop/types/convert.hpp>
@@ -33,7 +37,6 @@
 #include <iecoop/pou/attributes.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/extends.hpp>
-#include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/global_variables.hpp>
 #include <iecoop/pou/interface.hpp>
 #include <iecoop/pou/lifecycle.hpp>
