@@ -13,7 +13,9 @@
 // (enumeration.hpp and initial_value.hpp first: a refused start value is then reported one
 // include deep, which keeps the user's own line within the first lines of clang's report)
 #include <iecoop/types/enumeration.hpp>
+
 #include <iecoop/detail/initial_value.hpp>  // IWYU pragma: keep
+
 #include <iecoop/types/array.hpp>
 #include <iecoop/types/bit_access.hpp>
 #include <iecoop/types/convert.hpp>
@@ -65,6 +67,7 @@
 
 // sfc/: Sequential Function Charts, the language of steps and transitions (6.7)
 #include <iecoop/sfc/elements.hpp>  // before chart.hpp: a refused TRANSITION is two includes deep
+
 #include <iecoop/sfc/chart.hpp>
 #include <iecoop/sfc/step.hpp>
 

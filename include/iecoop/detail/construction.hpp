@@ -94,11 +94,12 @@ inline void lifecycle_fault(const char* message, const char* name) {
 }
 
 inline void report_owed(const owed_fb_init& owed) {
-  lifecycle_fault("a block's constructor does not call run_fb_init(*this, ...) (an inherited constructor, `using "
-                  "extends::extends;`, cannot): the FB_Init of the blocks it EXTENDS did not run, as iecoop runs "
-                  "them on the whole block only from the most derived one; give the block (the fault's pou) a "
-                  "constructor that calls run_fb_init(*this, <FB_Init parameters>)",
-                  owed.name);
+  lifecycle_fault(
+      "a block's constructor does not call run_fb_init(*this, ...) (an inherited constructor, `using "
+      "extends::extends;`, cannot): the FB_Init of the blocks it EXTENDS did not run, as iecoop runs "
+      "them on the whole block only from the most derived one; give the block (the fault's pou) a "
+      "constructor that calls run_fb_init(*this, <FB_Init parameters>)",
+      owed.name);
 }
 
 /// Reports (and forgets) the derived blocks whose constructors ended without running their
@@ -168,8 +169,7 @@ bool fb_init_deferred() noexcept {
 /// extends<Derived, Base>'s last base is constructed: Base is complete. If Derived is itself a
 /// base part of a block under construction, what Base deferred waits for that one; otherwise
 /// Derived is the whole object, whose constructor owes the deferred FB_Init.
-inline void end_base_construction(const void* derived, const void* base, std::size_t size,
-                                  const char* name) noexcept {
+inline void end_base_construction(const void* derived, const void* base, std::size_t size, const char* name) noexcept {
   lifecycle_tracking& tracking = extends_tracking();
   if (tracking.frame_count == 0 || tracking.frames[tracking.frame_count - 1].base != base) return;
   const construction_frame done = tracking.frames[--tracking.frame_count];

@@ -447,10 +447,11 @@ struct base_construction_ends {
     if (current_lifecycle.exit_suppressed) return;
     if (fb_exit_level_done(lifecycle_id<Derived>(), lifecycle_id<Base>())) return;
     if constexpr (chain_declares_fb_exit<Derived>()) {
-      lifecycle_fault("a block's destructor does not call run_fb_exit(*this): CODESYS runs the FB_Exit of every "
-                      "level on the whole block, which C++ can do only from the most derived destructor; the bases' "
-                      "FB_Exit now run without it. Give the block (the fault's pou) `~Block() { run_fb_exit(*this); }`",
-                      short_type_name_c<Derived>.data());
+      lifecycle_fault(
+          "a block's destructor does not call run_fb_exit(*this): CODESYS runs the FB_Exit of every "
+          "level on the whole block, which C++ can do only from the most derived destructor; the bases' "
+          "FB_Exit now run without it. Give the block (the fault's pou) `~Block() { run_fb_exit(*this); }`",
+          short_type_name_c<Derived>.data());
     }
   }
 
