@@ -29,8 +29,8 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
+#include <iecoop/detail/meta.hpp>
 #include <iecoop/detail/reflect.hpp>
-#include <iecoop/pou/attributes.hpp>
 #include <iecoop/types/elementary.hpp>  // first: its diagnostics stay near the top of the compiler's output
 #include <iecoop/types/enumeration.hpp>
 

@@ -79,4 +79,31 @@ struct base_of<B> {
   using type = typename B::iecoop_base_block;
 };
 
+/// The attributes a block's own declaration lists (pou/attributes.hpp; not those of the
+/// blocks it extends), or void.
+template <class B>
+struct own_attributes {
+  using type = void;
+};
+template <class B>
+  requires requires { typename B::iecoop_attributes; }
+struct own_attributes<B> {
+  using type = typename B::iecoop_attributes;
+};
+template <class B>
+using own_attributes_t = typename own_attributes<B>::type;
+
+/// B (or a block it extends) is declared no_assign ({attribute 'no_assign'}).
+template <class B>
+constexpr bool refuses_assignment() noexcept {
+  if constexpr (std::is_void_v<B> || !std::is_class_v<B>) {
+    return false;
+  } else {
+    if constexpr (!std::is_void_v<own_attributes_t<B>>) {
+      if constexpr (own_attributes_t<B>::iecoop_no_assign) return true;
+    }
+    return refuses_assignment<typename base_of<B>::type>();
+  }
+}
+
 }  // namespace iecoop::detail

@@ -50,6 +50,8 @@ inline constexpr bool is_block_attribute = std::is_same_v<A, no_explicit_call> |
  */
 template <class... A>
 struct attributes {
+  /// no_assign is listed (read by detail::refuses_assignment, detail/meta.hpp).
+  static constexpr bool iecoop_no_assign = (std::is_same_v<A, no_assign> || ...);
   static_assert((detail::is_block_attribute<A> && ...),
                 "iecoop: attributes<...> lists no_explicit_call and no_assign (the attribute pragmas of a block that "
                 "iecoop checks); leave out the others: see the porting guide for what each becomes");
@@ -73,29 +75,6 @@ template <class Attributes, class A>
 inline constexpr bool lists_attribute = false;
 template <class... As, class A>
 inline constexpr bool lists_attribute<attributes<As...>, A> = (std::is_same_v<As, A> || ...);
-
-/// The attributes a block's own declaration lists (not those of the blocks it extends).
-template <class B>
-struct own_attributes {
-  using type = attributes<>;
-};
-template <class B>
-  requires requires { typename B::iecoop_attributes; }
-struct own_attributes<B> {
-  using type = typename B::iecoop_attributes;
-};
-template <class B>
-using own_attributes_t = typename own_attributes<B>::type;
-
-/// B (or a block it extends) is declared no_assign.
-template <class B>
-constexpr bool refuses_assignment() noexcept {
-  if constexpr (std::is_void_v<B> || !std::is_class_v<B>) {
-    return false;
-  } else {
-    return lists_attribute<own_attributes_t<B>, no_assign> || refuses_assignment<typename base_of<B>::type>();
-  }
-}
 
 }  // namespace detail
 
