@@ -212,6 +212,13 @@ struct first_external_fault<Listed, O, Owned...>
                          first_external_fault<Listed, Owned...>,
                          external_fault<Listed, O, typename external_of<O>::type>> {};
 
+// first_external_fault over a type_list of the owned instances (a class template, not a lambda
+// in decltype: clang 14 crashes on that in a class template's member alias).
+template <class Listed, class OwnedList>
+struct first_external_fault_in;
+template <class Listed, class... Owned>
+struct first_external_fault_in<Listed, type_list<Owned...>> : first_external_fault<Listed, Owned...> {};
+
 /// An application's configuration, `Entries...` as given to application{...}.
 template <class... Entries>
 struct configuration {
@@ -264,9 +271,7 @@ struct configuration {
   using program_outside_tasks = typename first_given_as_is<entry_is_program, Entries...>::type;
   /// The first fault in a program's VAR_EXTERNAL, void if none: VAR_EXTERNAL_not_globals<P, X>
   /// or VAR_EXTERNAL_not_in_globals<P, GVL>.
-  using external_fault = typename decltype([]<class... Owned>(type_list<Owned...>) {
-    return std::type_identity<typename first_external_fault<globals_list, Owned...>::type>{};
-  }(owned_list{}))::type;
+  using external_fault = typename first_external_fault_in<globals_list, owned_list>::type;
   /// That fault if it is a list the application does not list, void otherwise.
   using external_not_in_globals = typename external_kind<external_fault, true>::type;
   /// That fault if the VAR_EXTERNAL is not globals<...>, void otherwise.
