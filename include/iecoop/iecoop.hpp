@@ -31,9 +31,11 @@
 #include <iecoop/types/time.hpp>
 
 // pou/: program organisation units and the object-oriented extensions (6.5, 6.6)
-// (function_block.hpp first: the diagnostics of a call or an assignment of a block stay near the top
-// of the compiler's output)
+// (function_block.hpp, then lifecycle.hpp, first: the diagnostics of a call, an assignment or an
+// FB_Init of a block stay near the top of the compiler's output)
 #include <iecoop/pou/function_block.hpp>
+
+#include <iecoop/pou/lifecycle.hpp>
 
 #include <iecoop/pou/access.hpp>
 #include <iecoop/pou/attributes.hpp>
