@@ -1,6 +1,6 @@
 // EXPECT: iecoop: enum_initial<E> is one of E's components
+// EXPECT: enum_initial_not_a_component.cpp:15
 // EXPECT-ERRORS: 1
-// EXPECT-WITHIN: 16
 // ST's `TYPE E_Valve : (Open, Closed) := Closed; END_TYPE` is enum_initial<E_Valve>, declared as
 // one of E_Valve's components: a number, or another enumeration's component, is none.
 #include <iecoop/iecoop.hpp>

@@ -1,7 +1,7 @@
-// EXPECT: iecoop: the VAR_INPUT or VAR_OUTPUT spelled in `Pin` has a C\+\+ type \(an enum, int, bool, a pointer\)
+// EXPECT: iecoop: the VAR_INPUT or VAR_OUTPUT of the block `B` whose name this report spells has a C\+\+ type \(an enum, int, bool, a pointer\)
 // EXPECT: 'e', 'S', 't', 'a', 't', 'e'
 // EXPECT-ERRORS: 1
-// EXPECT-WITHIN: 16
+// EXPECT: enum_pin_without_initial_value.cpp:24
 // A VAR_INPUT of an enumeration is a plain C++ enum member: without an initial value C++
 // leaves it undefined where the block is default-initialised (a local, a member), where ST
 // starts it at its first component. iecoop refuses such a pin when the block is called.

@@ -1,7 +1,7 @@
 // EXPECT: iecoop: a variable of an enumeration starts at its first component in ST
 // EXPECT: E_Mode
+// EXPECT: enum_variable_start_unknown.cpp:15
 // EXPECT-ERRORS: 1
-// EXPECT-WITHIN: 16
 // ST starts a variable of an enumeration declared without an initial value at its first
 // component: iecoop knows the first component from the declared components (or the type's
 // initial value), and refuses a var<E> it cannot start.

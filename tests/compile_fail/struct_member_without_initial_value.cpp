@@ -1,7 +1,7 @@
-// EXPECT: iecoop: a member of the STRUCT `Struct` \(spelled in `Member`\) has a C\+\+ type
+// EXPECT: iecoop: a member of the STRUCT `T` \(its name spelled in this report\) has a C\+\+ type
 // EXPECT: 'e', 'M', 'o', 'd', 'e'
 // EXPECT-ERRORS: 1
-// EXPECT-WITHIN: 16
+// EXPECT: struct_member_without_initial_value.cpp:21
 // A STRUCT member of a C++ enum type without an initial value is undefined wherever the STRUCT
 // is default-initialised (a local variable, a member of a block declared as a local). iecoop
 // refuses the STRUCT where it sees it: a var<>, an ARRAY's element, a block's pin, a method's

@@ -150,15 +150,6 @@ template <class S, std::size_t I>
 using spelled_struct_member_t =
     decltype(spell_struct_member<S, I>(std::make_index_sequence<field_name<S, I>.size()>{}));
 
-template <class Struct, class Member>
-constexpr void STRUCT_member_without_initial_value() {
-  static_assert(dependent_false<Struct>,
-                "iecoop: a member of the STRUCT `Struct` (spelled in `Member`) has a C++ type (an enum, int, bool, a "
-                "pointer) and no initial value: C++ leaves it undefined where the STRUCT is not value-initialised, ST "
-                "starts it at 0 or at the enumeration's first component; write its initial value in the STRUCT "
-                "(`E_State eState = E_State::Idle;`), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
-}
-
 template <class T>
 constexpr bool require_st_start();
 
@@ -180,7 +171,13 @@ constexpr bool require_st_start() {
   } else if constexpr (plain_struct<T>) {
     constexpr std::size_t undefined = first_field_left_undefined<T>();
     if constexpr (undefined < field_count<T>) {
-      STRUCT_member_without_initial_value<T, spelled_struct_member_t<T, undefined>>();
+      // Here, not in a function of its own: one level less between the report and the user's line.
+      static_assert(
+          dependent_false<spelled_struct_member_t<T, undefined>>,
+          "iecoop: a member of the STRUCT `T` (its name spelled in this report) has a C++ type (an enum, int, bool, a "
+          "pointer) and no initial value: C++ leaves it undefined where the STRUCT is not value-initialised, "
+          "ST starts it at 0 or at the enumeration's first component; write its initial value in the "
+          "STRUCT (`E_State eState = E_State::Idle;`), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
       return false;
     } else {
       return members_start_defined<T>(std::make_index_sequence<field_count<T>>{});

@@ -240,15 +240,6 @@ constexpr void check_interface() {
       "iecoop: two pins of the block have the same name; a derived block may not redeclare a variable of its base");
 }
 
-template <class Block, class Pin>
-constexpr void VAR_INPUT_or_VAR_OUTPUT_without_initial_value() {
-  static_assert(dependent_false<Block>,
-                "iecoop: the VAR_INPUT or VAR_OUTPUT spelled in `Pin` has a C++ type (an enum, int, bool, a pointer) "
-                "and no initial value: C++ leaves it undefined where the block is not value-initialised (a local "
-                "variable, a member), ST starts it at 0 or at the enumeration's first component; write its initial "
-                "value (`E_State eState = E_State::Idle;`), or give it an IEC type (INT, BOOL, POINTER_TO<T>)");
-}
-
 /// Each pin of B starts as ST says: a pin of a C++ scalar type (an enumeration) has an initial
 /// value (told where B can be constructed in a constant expression; iecoop-check tells the
 /// rest), a STRUCT pin's members have theirs.
@@ -261,16 +252,26 @@ constexpr bool pins_start_defined(std::index_sequence<I...>) {
     return found;
   }();
   if constexpr (undefined < count) {
-    VAR_INPUT_or_VAR_OUTPUT_without_initial_value<B, spelled_member_t<pin<Pins, undefined>>>();
+    // Here, not in a function of its own: one level less between the report and the user's line.
+    static_assert(dependent_false<spelled_member_t<pin<Pins, undefined>>>,
+                  "iecoop: the VAR_INPUT or VAR_OUTPUT of the block `B` whose name this report spells has a C++ type "
+                  "(an enum, int, bool, a pointer) and no initial value: C++ leaves it undefined where the block is "
+                  "not value-initialised (a local variable, a member), ST starts it at 0 or at the enumeration's "
+                  "first component; write its initial value (`E_State eState = E_State::Idle;`), or give it an IEC "
+                  "type (INT, BOOL, POINTER_TO<T>)");
     return false;
   } else {
     return (require_st_start<std::remove_cvref_t<decltype(std::declval<B&>().*pin<Pins, I>)>>() && ...);
   }
 }
 
+/// B's VAR_INPUT and VAR_OUTPUT pins.
+template <class B>
+using start_pins_t = typename concat_pins<inputs_of<B>, outputs_of<B>>::type;
+
 template <class B>
 constexpr void check_pins_start() {
-  using pins = typename concat_pins<inputs_of<B>, outputs_of<B>>::type;
+  using pins = start_pins_t<B>;
   static_assert((pins_start_defined<B, pins>(std::make_index_sequence<pins::size>{}), true));  // says what is wrong
 }
 
@@ -522,6 +523,9 @@ class block_calls {
           "not called (ST: inst(); CODESYS error C0554); use its methods and properties, or call a block "
           "that extends it, or drop no_explicit_call from the block's attributes<>");
     } else if constexpr (call_is_valid<Self>()) {
+      // The pins' start checked here too: its report is then one call from the user's line.
+      static_assert(
+          (pins_start_defined<Self, start_pins_t<Self>>(std::make_index_sequence<start_pins_t<Self>::size>{}), true));
       call_valid_block(self());
     } else {
       report_invalid_call<Self>();
@@ -541,6 +545,9 @@ class block_calls {
           "not called (ST: inst(); CODESYS error C0554); use its methods and properties, or call a block "
           "that extends it, or drop no_explicit_call from the block's attributes<>");
     } else if constexpr (call_is_valid<Self, A...>()) {
+      // The pins' start checked here too: its report is then one call from the user's line.
+      static_assert(
+          (pins_start_defined<Self, start_pins_t<Self>>(std::make_index_sequence<start_pins_t<Self>::size>{}), true));
       call_valid_block(self(), std::forward<A>(arguments)...);
     } else {
       report_invalid_call<Self, A...>();

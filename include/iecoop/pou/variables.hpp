@@ -218,7 +218,23 @@ class local : public detail::assignable_variable<local<T, Owner>, T> {
   /// The block that declares the variable.
   using owner_type = Owner;
 
-  constexpr local() = default;
+  constexpr local()
+    requires(detail::enum_start_declared<T>())
+  = default;
+  /// A variable of an enumeration whose start iecoop does not know, declared without an initial
+  /// value: refused here, so that the report names the declaration's own line.
+  constexpr local() noexcept
+    requires(!detail::enum_start_declared<T>())
+      : base(T{}) {
+    static_assert(!detail::has_initial<T>,
+                  "iecoop: enum_initial<E> is one of E's components; declare it as "
+                  "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+    static_assert(detail::has_initial<T>,
+                  "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
+                  "from the enumeration's declared components (the enumeration is `T`); declare them, first component "
+                  "first: template <> inline constexpr auto iecoop::enum_components<E> = iecoop::components<E::A, "
+                  "E::B>{}; (or the type's initial value, enum_initial<E>), or give the variable its initial value");
+  }
   /// The declaration's initial value: `var<INT> count{5};`
   constexpr explicit local(const T& initial) : base(initial) {}
   constexpr local(const local&) = default;

@@ -456,6 +456,19 @@ inline constexpr bool has_initial = !std::is_same_v<std::remove_cv_t<decltype(en
 template <class E>
 inline constexpr bool knows_enum_start = has_initial<E> || has_components<E>;
 
+/// A variable of T starts as ST says without an initial value of its own: T is no enumeration,
+/// or iecoop knows the enumeration's start (and enum_initial<T>, if declared, is a T).
+template <class T>
+constexpr bool enum_start_declared() noexcept {
+  if constexpr (!std::is_enum_v<T>) {
+    return true;
+  } else if constexpr (has_initial<T>) {
+    return std::is_same_v<std::remove_cv_t<decltype(enum_initial<T>)>, T>;
+  } else {
+    return has_components<T>;
+  }
+}
+
 template <class Enum>
 constexpr void enum_start_unknown() {
   static_assert(knows_enum_start<Enum>,
