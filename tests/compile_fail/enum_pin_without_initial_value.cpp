@@ -1,4 +1,4 @@
-// EXPECT: iecoop: the VAR_INPUT or VAR_OUTPUT of the block `B` whose name this report spells has a C\+\+ type \(an enum, int, bool, a pointer\)
+// EXPECT: iecoop: the VAR_INPUT or VAR_OUTPUT of the block `B` whose name this report spells has a C\+\+ type
 // EXPECT: 'e', 'S', 't', 'a', 't', 'e'
 // EXPECT-ERRORS: 1
 // EXPECT: enum_pin_without_initial_value.cpp:24
