@@ -1,6 +1,7 @@
 // EXPECT: iecoop: io_chain: the driver 'UndeclaredDriver' declares no input footprint
 // EXPECT: io_chain_footprint_undeclared<2, old_card, 1, local_card>
 // EXPECT-ERRORS: 1
+// EXPECT: io_chain_footprint_undeclared\.cpp:29:
 // A driver that declares no input footprint may write any input byte: it shares no chain with
 // another driver that writes inputs. Declaring what it writes lets it in.
 #include <iecoop/io/driver.hpp>

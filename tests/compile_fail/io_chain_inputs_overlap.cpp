@@ -3,6 +3,7 @@
 // EXPECT: remote_card
 // EXPECT: spelled<'%', 'I', 'B', '2', '.', '.', '%', 'I', 'B', '3'>
 // EXPECT-ERRORS: 1
+// EXPECT: io_chain_inputs_overlap\.cpp:33:
 // Two drivers of a chain whose input footprints are known while compiling must not write the
 // same input bits: the remote card's %IW1 is the local card's %IB2 and %IB3.
 #include <iecoop/io/driver.hpp>

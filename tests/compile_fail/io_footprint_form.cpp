@@ -1,5 +1,6 @@
 // EXPECT: iecoop: a driver's input_footprint\(\) is `static constexpr std::array<image_window, N> input_footprint\(\)`
 // EXPECT-ERRORS: 1
+// EXPECT: io_footprint_form\.cpp:27:
 // A driver declares its input footprint as a static constexpr std::array (known while
 // compiling) or as a std::span of windows it keeps (known at run time); an array returned by
 // value from a member function would be gone before io_chain reads it.

@@ -1,5 +1,6 @@
 // EXPECT: iecoop: a window holds at least one bit, byte or word
 // EXPECT-ERRORS: 1
+// EXPECT: io_window_empty\.cpp:9:
 // A window of no values is no window: give its count.
 #include <iecoop/io/footprint.hpp>
 

@@ -1,6 +1,7 @@
 // EXPECT: iecoop: `fb.Prop->Member` reaches into a property of interface, POINTER_TO, REFERENCE_TO or STRUCT type
 // EXPECT: a value of this type has no members: read the property as a value
 // EXPECT-ERRORS: 1
+// EXPECT: property_elementary_gone_through\.cpp:17:
 // `->` on a property reaches the members of its value; an LREAL has none.
 #include <iecoop/iecoop.hpp>
 using namespace iecoop;

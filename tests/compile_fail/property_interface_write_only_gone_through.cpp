@@ -1,6 +1,7 @@
 // EXPECT: iecoop: `fb.Prop->Member` reaches the member through the value the property's Get gives
 // EXPECT: and this property has no Get \(it is write-only\); give the property a Get accessor
 // EXPECT-ERRORS: 1
+// EXPECT: property_interface_write_only_gone_through\.cpp:39:
 // ST's `fbPID.IntegratorBounds.Maximum := 5;` reads IntegratorBounds (its Get) to reach the
 // interface behind it: a property without Get cannot be gone through.
 #include <iecoop/iecoop.hpp>

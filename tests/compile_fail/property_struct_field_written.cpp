@@ -1,5 +1,6 @@
 // EXPECT: operand types are .+const iecoop::LREAL|no viable overloaded '='|read-only object|returns a const value
 // EXPECT-ERRORS: 1
+// EXPECT: property_struct_field_written\.cpp:26:
 // `fb.Limits.fHigh := 5;` for a PROPERTY Limits of STRUCT type would change the copy that Get
 // returned, not the block (CODESYS refuses it): the fields read through `->` are const, and the
 // compiler says so in its own words (no iecoop message can reach a field's assignment). The fix

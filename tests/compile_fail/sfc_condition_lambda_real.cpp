@@ -1,4 +1,5 @@
 // EXPECT: iecoop: a TRANSITION's condition is a BOOL; the callable of the transition in none<...> \(named by its FROM
+// EXPECT: sfc_condition_lambda_real\.cpp:23:
 // and TO steps\) yields a number EXPECT: sfc_condition_lambda_real.cpp:23 EXPECT-ERRORS: 1 A generic lambda that yields
 // a REAL: refused where the chart runs (chart(*this)); its result is known only once the POU is complete.
 #include <iecoop/iecoop.hpp>

@@ -282,7 +282,8 @@ class io_chain {
 
  public:
   explicit constexpr io_chain(D&... drivers) noexcept : drivers_{&drivers...} {
-    detail::check_static_footprints<D...>();
+    (detail::check_footprint_form<D>(), ...);
+    static_assert(sizeof(detail::footprint_report_t<D...>) > 0);  // a clash of drivers is reported by that type
   }
 
   void read_inputs(std::span<std::byte> inputs) {

@@ -355,25 +355,33 @@ struct io_chain_footprint_undeclared {
 template <std::size_t I, class... D>
 using driver_at = std::tuple_element_t<I, std::tuple<D...>>;
 
-/// Rejects, while compiling, two drivers of a chain whose footprints are known and share an
-/// input bit.
+/// No two drivers of the chain clash (footprint_report_t).
+struct no_footprint_clash {};
+
+/// The type whose instantiation reports the first clash of the chain's drivers whose footprints
+/// are known while compiling (two that share an input bit, or one that declares none beside
+/// another that writes inputs), no_footprint_clash if none: io_chain's constructor asks for its
+/// size, so that the report is one step from the user's line.
 template <class... D>
-constexpr void check_static_footprints() noexcept {
-  (check_footprint_form<D>(), ...);
+constexpr auto footprint_report() noexcept {
   constexpr footprint_clash c = static_clash_v<D...>;
-  if constexpr (c.found()) {
+  if constexpr (!c.found()) {
+    return std::type_identity<no_footprint_clash>{};
+  } else {
     using first = driver_at<c.first, D...>;
     using second = driver_at<c.second, D...>;
     if constexpr (c.first_unknown) {
-      static_assert(sizeof(io_chain_footprint_undeclared<c.first + 1, first, c.second + 1, second>) > 0);  // reports
+      return std::type_identity<io_chain_footprint_undeclared<c.first + 1, first, c.second + 1, second>>{};
     } else if constexpr (c.second_unknown) {
-      static_assert(sizeof(io_chain_footprint_undeclared<c.second + 1, second, c.first + 1, first>) > 0);  // reports
+      return std::type_identity<io_chain_footprint_undeclared<c.second + 1, second, c.first + 1, first>>{};
     } else {
-      static_assert(sizeof(io_chain_inputs_overlap<c.first + 1, first, c.second + 1, second,
-                                                   spelled_t<window_text<c.shared>()>>) > 0);  // reports
+      return std::type_identity<
+          io_chain_inputs_overlap<c.first + 1, first, c.second + 1, second, spelled_t<window_text<c.shared>()>>>{};
     }
   }
 }
+template <class... D>
+using footprint_report_t = typename decltype(footprint_report<D...>())::type;
 
 // --- The optional configuration check of a driver ---------------------------------------
 
