@@ -146,7 +146,23 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
   }
 
  protected:
-  constexpr variable_value() = default;
+  constexpr variable_value()
+    requires(enum_start_declared<T>())
+  = default;
+  /// A variable of an enumeration whose start iecoop does not know (temp<>, retain<>, ...;
+  /// local<> refuses it itself, nearer the user's line).
+  constexpr variable_value() noexcept
+    requires(!enum_start_declared<T>())
+      : value_(T{}) {
+    static_assert(!has_initial<T>,
+                  "iecoop: enum_initial<E> is one of E's components; declare it as "
+                  "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+    static_assert(has_initial<T>,
+                  "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
+                  "from the enumeration's declared components (the enumeration is `T`); declare them, first component "
+                  "first: template <> inline constexpr auto iecoop::enum_components<E> = iecoop::components<E::A, "
+                  "E::B>{}; (or the type's initial value, enum_initial<E>), or give the variable its initial value");
+  }
   constexpr explicit variable_value(const T& initial) : value_(initial) {}
 
   // Values are copied as scalars (detail/scalar_access.hpp), so that the optimiser sees
