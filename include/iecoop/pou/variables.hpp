@@ -147,21 +147,25 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
 
  protected:
   constexpr variable_value()
-    requires(enum_start_declared<T>())
+    requires(!std::is_enum_v<T>)
   = default;
-  /// A variable of an enumeration whose start iecoop does not know (temp<>, retain<>, ...;
-  /// local<> refuses it itself, nearer the user's line).
+  /// A variable of an enumeration: its start, or (temp<>, retain<>, ...; local<> refuses it
+  /// itself, nearer the user's line) refused where iecoop does not know it. Checked when the
+  /// constructor is used, so that enum_components<E> may be declared after the variable.
   constexpr variable_value() noexcept
-    requires(!enum_start_declared<T>())
-      : value_(T{}) {
-    static_assert(!has_initial<T>,
-                  "iecoop: enum_initial<E> is one of E's components; declare it as "
-                  "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
-    static_assert(has_initial<T>,
-                  "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
-                  "from the enumeration's declared components (the enumeration is `T`); declare them, first component "
-                  "first: template <> inline constexpr auto iecoop::enum_components<E> = iecoop::components<E::A, "
-                  "E::B>{}; (or the type's initial value, enum_initial<E>), or give the variable its initial value");
+    requires(std::is_enum_v<T>)
+      : value_(enum_start_or_zero<T>()) {
+    if constexpr (!enum_start_declared<T>()) {
+      static_assert(!has_initial<T>,
+                    "iecoop: enum_initial<E> is one of E's components; declare it as "
+                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+      static_assert(has_initial<T>,
+                    "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows "
+                    "only from the enumeration's declared components (the enumeration is `T`); declare them, first "
+                    "component first: template <> inline constexpr auto iecoop::enum_components<E> = "
+                    "iecoop::components<E::A, E::B>{}; (or the type's initial value, enum_initial<E>), or give the "
+                    "variable its initial value");
+    }
   }
   constexpr explicit variable_value(const T& initial) : value_(initial) {}
 
@@ -235,21 +239,24 @@ class local : public detail::assignable_variable<local<T, Owner>, T> {
   using owner_type = Owner;
 
   constexpr local()
-    requires(detail::enum_start_declared<T>())
+    requires(!std::is_enum_v<T>)
   = default;
-  /// A variable of an enumeration whose start iecoop does not know, declared without an initial
-  /// value: refused here, so that the report names the declaration's own line.
+  /// A variable of an enumeration declared without an initial value: its start, or refused
+  /// here where iecoop does not know it, so that the report names the declaration's own line.
   constexpr local() noexcept
-    requires(!detail::enum_start_declared<T>())
-      : base(T{}) {
-    static_assert(!detail::has_initial<T>,
-                  "iecoop: enum_initial<E> is one of E's components; declare it as "
-                  "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
-    static_assert(detail::has_initial<T>,
-                  "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
-                  "from the enumeration's declared components (the enumeration is `T`); declare them, first component "
-                  "first: template <> inline constexpr auto iecoop::enum_components<E> = iecoop::components<E::A, "
-                  "E::B>{}; (or the type's initial value, enum_initial<E>), or give the variable its initial value");
+    requires(std::is_enum_v<T>)
+      : base(detail::enum_start_or_zero<T>()) {
+    if constexpr (!detail::enum_start_declared<T>()) {
+      static_assert(!detail::has_initial<T>,
+                    "iecoop: enum_initial<E> is one of E's components; declare it as "
+                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+      static_assert(detail::has_initial<T>,
+                    "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows "
+                    "only from the enumeration's declared components (the enumeration is `T`); declare them, first "
+                    "component first: template <> inline constexpr auto iecoop::enum_components<E> = "
+                    "iecoop::components<E::A, E::B>{}; (or the type's initial value, enum_initial<E>), or give the "
+                    "variable its initial value");
+    }
   }
   /// The declaration's initial value: `var<INT> count{5};`
   constexpr explicit local(const T& initial) : base(initial) {}

@@ -469,6 +469,10 @@ constexpr bool enum_start_declared() noexcept {
   }
 }
 
+/// E's start where it is declared, else E{} (the refusal is reported where the variable is made).
+template <class E>
+constexpr E enum_start_or_zero() noexcept;
+
 template <class Enum>
 constexpr void enum_start_unknown() {
   static_assert(knows_enum_start<Enum>,
@@ -497,6 +501,15 @@ constexpr E enum_start() noexcept {
     return components_of<E>::values[0];
   } else {
     enum_start_unknown<E>();
+    return E{};
+  }
+}
+
+template <class E>
+constexpr E enum_start_or_zero() noexcept {
+  if constexpr (enum_start_declared<E>()) {
+    return enum_start<E>();
+  } else {
     return E{};
   }
 }
