@@ -11,6 +11,7 @@ int main() {
   modbus_server_config config;
   config.bind_address = "127.0.0.1";
   config.port = 0;
+  config.holding_image = "%IW0";  // the holding registers' first input word (no default)
   modbus_server<> server{config};
   if (const char* error = server.start()) {
     std::puts(error);
