@@ -181,6 +181,7 @@ struct FB_All : function_block<FB_All> {
   var<itf<I_Named>> ipVar;
   retain<E_Five> eRetain;
   retain<UDINT> udRetain;
+  persistent<E_Init> ePersistent;
   TON tonInner;  // a block inside a block
   ARRAY<TON, 1, 2> aTon;
   ARRAY<E_Strict, 1, 3> aeStrict;
@@ -255,6 +256,7 @@ void check_block(R& report, const FB_All& fb) {
   expect(report, "VAR interface variable is 0", !fb.ipVar.get());
   check_enum(report, "RETAIN E_Five starts at a", fb.eRetain.get(), E_Five::a);
   expect(report, "RETAIN UDINT is 0", fb.udRetain.get().value() == 0);
+  check_enum(report, "PERSISTENT E_Init starts at its type's initial value", fb.ePersistent.get(), E_Init::Run);
   expect(report, "a TON inside starts idle",
          !fb.tonInner.Q && fb.tonInner.ET.get().count() == 0 && !fb.tonInner.IN && fb.tonInner.PT.count() == 0);
   expect(report, "ARRAY OF TON starts idle", !fb.aTon[1].Q && !fb.aTon[2].Q && fb.aTon[2].ET.get().count() == 0);

@@ -187,6 +187,10 @@ using first_output_t = typename detail::first_output_checked<Vars>::type;
  */
 template <class Vars>
 class args : public Vars {
+  // Vars built once in a constant expression before anything else looks into it: a variable
+  // whose constructor refuses its declaration (a temp<E> of an enumeration without a known
+  // start) is then reported from Vars's own line, not from inside the field reflection.
+  static_assert(requires { typename std::bool_constant<(Vars(), true)>; } || true);
   static_assert(Reflectable<Vars>,
                 "iecoop: a METHOD's or FUNCTION's variables are a plain struct (an aggregate of at most 32 fields, "
                 "without base classes or C arrays)");

@@ -155,17 +155,7 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
   constexpr variable_value() noexcept
     requires(std::is_enum_v<T>)
       : value_(enum_start_or_zero<T>()) {
-    if constexpr (!enum_start_declared<T>()) {
-      static_assert(!has_initial<T>,
-                    "iecoop: enum_initial<E> is one of E's components; declare it as "
-                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
-      static_assert(has_initial<T>,
-                    "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows "
-                    "only from the enumeration's declared components (the enumeration is `T`); declare them, first "
-                    "component first: template <> inline constexpr auto iecoop::enum_components<E> = "
-                    "iecoop::components<E::A, E::B>{}; (or the type's initial value, enum_initial<E>), or give the "
-                    "variable its initial value");
-    }
+    refuse_unknown_enum_start<T>();
   }
   constexpr explicit variable_value(const T& initial) : value_(initial) {}
 
@@ -246,17 +236,7 @@ class local : public detail::assignable_variable<local<T, Owner>, T> {
   constexpr local() noexcept
     requires(std::is_enum_v<T>)
       : base(detail::enum_start_or_zero<T>()) {
-    if constexpr (!detail::enum_start_declared<T>()) {
-      static_assert(!detail::has_initial<T>,
-                    "iecoop: enum_initial<E> is one of E's components; declare it as "
-                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
-      static_assert(detail::has_initial<T>,
-                    "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows "
-                    "only from the enumeration's declared components (the enumeration is `T`); declare them, first "
-                    "component first: template <> inline constexpr auto iecoop::enum_components<E> = "
-                    "iecoop::components<E::A, E::B>{}; (or the type's initial value, enum_initial<E>), or give the "
-                    "variable its initial value");
-    }
+    detail::refuse_unknown_enum_start<T>();
   }
   /// The declaration's initial value: `var<INT> count{5};`
   constexpr explicit local(const T& initial) : base(initial) {}
@@ -281,7 +261,16 @@ class read_only : public detail::variable_value<T, false> {
   using owner_type = Owner;
   using iecoop_owner_writes = void;
 
-  constexpr read_only() = default;
+  constexpr read_only()
+    requires(!std::is_enum_v<T>)
+  = default;
+  /// A variable of an enumeration declared without an initial value: its start, or refused
+  /// here where iecoop does not know it, so that the report names the declaration's own line.
+  constexpr read_only() noexcept
+    requires(std::is_enum_v<T>)
+      : base(detail::enum_start_or_zero<T>()) {
+    detail::refuse_unknown_enum_start<T>();
+  }
   constexpr explicit read_only(const T& initial) : base(initial) {}
   constexpr read_only(const read_only&) = default;
 
@@ -561,7 +550,16 @@ class output : public detail::condition_conversion<output<T>, T>, public detail:
   using value_type = T;
   using iecoop_value_wrapper = void;
 
-  constexpr output() = default;
+  constexpr output()
+    requires(!std::is_enum_v<T>)
+  = default;
+  /// A variable of an enumeration declared without an initial value: its start, or refused
+  /// here where iecoop does not know it, so that the report names the declaration's own line.
+  constexpr output() noexcept
+    requires(std::is_enum_v<T>)
+      : value_(detail::enum_start_or_zero<T>()) {
+    detail::refuse_unknown_enum_start<T>();
+  }
   /// The declared initial value: `output<INT> x{5};` (ST: `x : INT := 5;`).
   constexpr explicit output(const T& initial) : value_(initial) {}
   constexpr output(const output& other) : value_(other.value_) {
@@ -627,7 +625,16 @@ class temp : public detail::assignable_variable<temp<T>, T> {
   using base = detail::assignable_variable<temp<T>, T>;
 
  public:
-  constexpr temp() = default;
+  constexpr temp()
+    requires(!std::is_enum_v<T>)
+  = default;
+  /// A variable of an enumeration declared without an initial value: its start, or refused
+  /// here where iecoop does not know it, so that the report names the declaration's own line.
+  constexpr temp() noexcept
+    requires(std::is_enum_v<T>)
+      : base(detail::enum_start_or_zero<T>()) {
+    detail::refuse_unknown_enum_start<T>();
+  }
   /// The declared initial value: `temp<INT> x{5};` (ST: `x : INT := 5;`).
   constexpr explicit temp(const T& initial) : base(initial) {}
   constexpr temp(const temp&) = default;

@@ -328,6 +328,16 @@ class retain : public detail::retained_variable<retain<T>, T, retain_kind::retai
   using base = detail::retained_variable<retain<T>, T, retain_kind::retain>;
 
  public:
+  retain()
+    requires(!std::is_enum_v<T>)
+  = default;
+  /// A variable of an enumeration declared without an initial value: its start, or refused
+  /// here where iecoop does not know it, so that the report names the declaration's own line.
+  retain() noexcept
+    requires(std::is_enum_v<T>)
+      : base(detail::enum_start_or_zero<T>()) {
+    detail::refuse_unknown_enum_start<T>();
+  }
   using base::base;
   using base::operator=;
 };
@@ -342,6 +352,16 @@ class persistent : public detail::retained_variable<persistent<T>, T, retain_kin
   using base = detail::retained_variable<persistent<T>, T, retain_kind::persistent>;
 
  public:
+  persistent()
+    requires(!std::is_enum_v<T>)
+  = default;
+  /// A variable of an enumeration declared without an initial value: its start, or refused
+  /// here where iecoop does not know it, so that the report names the declaration's own line.
+  persistent() noexcept
+    requires(std::is_enum_v<T>)
+      : base(detail::enum_start_or_zero<T>()) {
+    detail::refuse_unknown_enum_start<T>();
+  }
   using base::base;
   using base::operator=;
 };

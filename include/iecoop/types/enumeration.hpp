@@ -473,35 +473,37 @@ constexpr bool enum_start_declared() noexcept {
 template <class E>
 constexpr E enum_start_or_zero() noexcept;
 
+/// Refuses a variable of Enum declared without an initial value where iecoop does not know
+/// Enum's start. Called by each variable's constructor for an enumeration (one step from the
+/// user's declaration, so that the report names it), and by enum_start.
 template <class Enum>
-constexpr void enum_start_unknown() {
-  static_assert(knows_enum_start<Enum>,
-                "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
-                "from the enumeration's declared components (the enumeration is `Enum`); declare them, first component "
-                "first: template <> inline constexpr auto iecoop::enum_components<E> = iecoop::components<E::A, "
-                "E::B>{}; (or the type's initial value, enum_initial<E>), or give the variable its initial value");
+constexpr void refuse_unknown_enum_start() noexcept {
+  if constexpr (!enum_start_declared<Enum>()) {
+    static_assert(!has_initial<Enum>,
+                  "iecoop: enum_initial<E> is one of E's components; declare it as "
+                  "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
+    static_assert(has_initial<Enum>,
+                  "iecoop: a variable of an enumeration starts at its first component in ST, which iecoop knows only "
+                  "from the enumeration's declared components (the enumeration is `Enum`); declare them, first "
+                  "component first: template <> inline constexpr auto iecoop::enum_components<E> = "
+                  "iecoop::components<E::A, E::B>{}; (or the type's initial value, enum_initial<E>), or give the "
+                  "variable its initial value");
+  }
 }
 
 /// ST's initial value of a variable of the enumeration E declared without one: E's declared
 /// initial value (enum_initial<E>), else its first component (enum_components<E>).
 template <class E>
 constexpr E enum_start() noexcept {
-  if constexpr (has_initial<E>) {
-    if constexpr (std::is_same_v<std::remove_cv_t<decltype(enum_initial<E>)>, E>) {
-      return enum_initial<E>;
-    } else {
-      static_assert(dependent_false<E>,
-                    "iecoop: enum_initial<E> is one of E's components; declare it as "
-                    "`template <> inline constexpr E iecoop::enum_initial<E> = E::A;`");
-      return E{};
-    }
-  } else if constexpr (has_components<E>) {
+  if constexpr (!enum_start_declared<E>()) {
+    refuse_unknown_enum_start<E>();
+    return E{};
+  } else if constexpr (has_initial<E>) {
+    return enum_initial<E>;
+  } else {
     static_assert(std::is_same_v<typename components_of<E>::enum_type, E>,
                   "iecoop: enum_components<E> lists the components of another enumeration; list E's");
     return components_of<E>::values[0];
-  } else {
-    enum_start_unknown<E>();
-    return E{};
   }
 }
 
