@@ -12,6 +12,7 @@
 
 #include <iecoop/fmt.hpp>
 #include <iecoop/iecoop.hpp>
+#include <iecoop/runtime/file_storage.hpp>
 #include <iecoop/runtime/realtime.hpp>
 #include <iecoop/trace/watch.hpp>
 // Set by examples/CMakeLists.txt where the libraries are found.

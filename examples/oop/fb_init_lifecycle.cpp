@@ -13,6 +13,7 @@
 #include <iecoop/iecoop.hpp>
 #include <iecoop/ostream.hpp>
 
+#include <memory>
 #include <utility>
 
 namespace seed_fb_init {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // iecoop/iecoop.hpp — everything iecoop offers, in one include. (The optional integrations
 // <iecoop/fmt.hpp> and <iecoop/ostream.hpp> are not included: they pull in fmt and
-// <ostream>, which the core never needs; nor is the POSIX real-time runner
-// <iecoop/runtime/realtime.hpp> and the watch list <iecoop/trace/watch.hpp>, which use threads.)
+// <ostream>, which the core never needs; nor are the POSIX real-time runner
+// <iecoop/runtime/realtime.hpp> and the watch list <iecoop/trace/watch.hpp>, which use threads,
+// and the RETAIN image in a file, <iecoop/runtime/file_storage.hpp>, which uses POSIX files.)
 #pragma once
 
 // IWYU pragma: begin_exports
@@ -82,7 +83,6 @@
 // runtime/: tasks, the scheduler, the application, RETAIN (6.8)
 #include <iecoop/runtime/application.hpp>
 #include <iecoop/runtime/configuration.hpp>
-#include <iecoop/runtime/file_storage.hpp>
 #include <iecoop/runtime/retain.hpp>
 #include <iecoop/runtime/retain_storage.hpp>
 #include <iecoop/runtime/scheduler.hpp>

@@ -10,6 +10,7 @@
 
 #include <iecoop/runtime/application.hpp>
 
+#include <memory>
 #include <string>
 
 using namespace iecoop;

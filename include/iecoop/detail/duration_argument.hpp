@@ -7,9 +7,9 @@
 // IWYU pragma: private, include <iecoop/iecoop.hpp>
 #pragma once
 
-#include <chrono>
 #include <type_traits>
 
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/types/time.hpp>

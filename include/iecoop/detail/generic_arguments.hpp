@@ -17,7 +17,6 @@
 //   is: out of range it reports fault_kind::invalid_value and keeps the low bytes.
 #pragma once
 
-#include <algorithm>
 #include <concepts>
 #include <cstddef>
 #include <type_traits>
@@ -103,7 +102,7 @@ struct common_iec<A, B> {
 // Strings of one character type: the larger capacity.
 template <class C, std::size_t N, std::size_t M>
 struct common_iec<iec_string<C, N>, iec_string<C, M>> {
-  using type = iec_string<C, std::max(N, M)>;
+  using type = iec_string<C, (N >= M ? N : M)>;
 };
 
 template <class A, class B>

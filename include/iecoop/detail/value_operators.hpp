@@ -12,8 +12,7 @@
 // expressions that work on T work on a wrapper of T.
 #pragma once
 
-#include <functional>
-#include <string>
+#include <iosfwd>  // std::basic_string, declared (the operators never build one)
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -222,6 +221,58 @@ template <class W, class V>
 concept bool_into_number =
     writable_wrapper<W> && std::is_same_v<unwrapped_t<V>, BOOL> && number_for_bool<unwrapped_t<W>>;
 
+/// The operations of the compound assignments, as std::plus<> and its kin (which need
+/// <functional>, and with it <unordered_map>, in every user's translation unit): `a <op> b`,
+/// for operands that have it.
+struct add_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) + std::forward<B>(b)) {
+    return std::forward<A>(a) + std::forward<B>(b);
+  }
+};
+struct subtract_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) - std::forward<B>(b)) {
+    return std::forward<A>(a) - std::forward<B>(b);
+  }
+};
+struct multiply_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) * std::forward<B>(b)) {
+    return std::forward<A>(a) * std::forward<B>(b);
+  }
+};
+struct divide_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) / std::forward<B>(b)) {
+    return std::forward<A>(a) / std::forward<B>(b);
+  }
+};
+struct modulo_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) % std::forward<B>(b)) {
+    return std::forward<A>(a) % std::forward<B>(b);
+  }
+};
+struct bit_and_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) & std::forward<B>(b)) {
+    return std::forward<A>(a) & std::forward<B>(b);
+  }
+};
+struct bit_or_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) | std::forward<B>(b)) {
+    return std::forward<A>(a) | std::forward<B>(b);
+  }
+};
+struct bit_xor_op {
+  template <class A, class B>
+  constexpr auto operator()(A&& a, B&& b) const -> decltype(std::forward<A>(a) ^ std::forward<B>(b)) {
+    return std::forward<A>(a) ^ std::forward<B>(b);
+  }
+};
+
 /// `w = w <op> v` for a wrapper w: read, combine, assign back.
 template <class W, class Op, class V>
 constexpr auto compound_assign(W&& w, Op op, V&& v)
@@ -330,7 +381,7 @@ constexpr auto operator~(A&& a) -> decltype(~detail::value_of(std::forward<A>(a)
 // intermediate result or a value of another IEC type is combined as it is.
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator+=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::plus<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::add_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator+=(W&& w, V&&) {
@@ -339,12 +390,12 @@ constexpr W&& operator+=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator+=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::plus<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::add_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::add_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator-=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::minus<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::subtract_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator-=(W&& w, V&&) {
@@ -353,12 +404,12 @@ constexpr W&& operator-=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator-=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::minus<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::subtract_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::subtract_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator*=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::multiply_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator*=(W&& w, V&&) {
@@ -367,12 +418,12 @@ constexpr W&& operator*=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator*=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::multiplies<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::multiply_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::multiply_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator/=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::divides<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::divide_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator/=(W&& w, V&&) {
@@ -381,12 +432,12 @@ constexpr W&& operator/=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator/=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::divides<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::divide_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::divide_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator%=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::modulus<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::modulo_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator%=(W&& w, V&&) {
@@ -395,12 +446,12 @@ constexpr W&& operator%=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator%=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::modulus<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::modulo_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::modulo_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator&=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::bit_and_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator&=(W&& w, V&&) {
@@ -409,12 +460,12 @@ constexpr W&& operator&=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator&=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::bit_and<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::bit_and_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::bit_and_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator|=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::bit_or_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator|=(W&& w, V&&) {
@@ -423,12 +474,12 @@ constexpr W&& operator|=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator|=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::bit_or<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::bit_or_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::bit_or_op{}, std::forward<V>(v));
 }
 template <class W, detail::enable_for<detail::writable_wrapper<W>> = 0>
 constexpr W&& operator^=(W&& w, const std::type_identity_t<detail::unwrapped_t<W>>& v) {
-  return detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, v);
+  return detail::compound_assign(std::forward<W>(w), detail::bit_xor_op{}, v);
 }
 template <class W, class V, detail::enable_for<detail::bool_into_number<W, V>> = 0>
 constexpr W&& operator^=(W&& w, V&&) {
@@ -437,8 +488,8 @@ constexpr W&& operator^=(W&& w, V&&) {
 }
 template <class W, class V, detail::enable_for<detail::compound_operand<W, V>> = 0>
 constexpr auto operator^=(W&& w, V&& v)
-    -> decltype(detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v))) {
-  return detail::compound_assign(std::forward<W>(w), std::bit_xor<>{}, std::forward<V>(v));
+    -> decltype(detail::compound_assign(std::forward<W>(w), detail::bit_xor_op{}, std::forward<V>(v))) {
+  return detail::compound_assign(std::forward<W>(w), detail::bit_xor_op{}, std::forward<V>(v));
 }
 
 /// `++x` and `--x` on a writable wrapper: x := x + 1.

@@ -17,10 +17,10 @@
 // why it must not run (the application's start() refuses it then).
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string_view>
 #include <tuple>
@@ -215,7 +215,7 @@ class simulated_io {
   /// IoDriver: copies the field's inputs into the image's input bytes (those of its window).
   void read_inputs(std::span<std::byte> inputs) noexcept {
     if (window_ == whole_inputs) {
-      std::copy_n(inputs_.begin(), std::min(inputs.size(), inputs_.size()), inputs.begin());
+      copy_bytes(inputs.data(), inputs.size(), inputs_.data(), inputs_.size());
     } else if (inputs.size() >= inputs_.size()) {
       copy_window(inputs, inputs_, window_);
     }
@@ -223,7 +223,7 @@ class simulated_io {
   }
   /// IoDriver: keeps the outputs the program wrote.
   void write_outputs(std::span<const std::byte> outputs) noexcept {
-    std::copy_n(outputs.begin(), std::min(outputs.size(), outputs_.size()), outputs_.begin());
+    copy_bytes(outputs_.data(), outputs_.size(), outputs.data(), outputs.size());
     ++writes_;
   }
 
@@ -252,6 +252,11 @@ class simulated_io {
 
  private:
   static constexpr image_window whole_inputs{io_area::input, 0, static_cast<std::uint32_t>(Image::input_bytes * 8)};
+  /// Copies as many bytes as both sides hold (none: no call, as memcpy must not see a null pointer).
+  static void copy_bytes(std::byte* to, std::size_t to_size, const std::byte* from, std::size_t from_size) noexcept {
+    const std::size_t count = to_size < from_size ? to_size : from_size;
+    if (count != 0) std::memcpy(to, from, count);
+  }
 
   std::array<std::byte, Image::input_bytes> inputs_{};
   std::array<std::byte, Image::output_bytes> outputs_{};

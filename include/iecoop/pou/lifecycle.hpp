@@ -27,7 +27,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <new>
 #include <tuple>
 #include <type_traits>
@@ -472,7 +471,7 @@ struct base_construction_ends {
 template <class T, class... A>
 T& first_start(void* storage, A&&... args) noexcept {
   detail::lifecycle_scope initialising({true, false, false, false});
-  return *std::construct_at(static_cast<T*>(storage), std::forward<A>(args)...);
+  return *::new (storage) T(std::forward<A>(args)...);
 }
 
 /// The resets of a running application (CODESYS: Online → Reset warm/cold/origin).
@@ -496,10 +495,10 @@ template <class T, class... A>
 T& reset(T& instance, reset_kind kind, A&&... args) noexcept {
   {
     detail::lifecycle_scope exiting({true, false, false, false});
-    std::destroy_at(&instance);
+    instance.~T();
   }
   detail::lifecycle_scope initialising({kind != reset_kind::warm, false, false, false});
-  return *std::construct_at(&instance, std::forward<A>(args)...);
+  return *::new (static_cast<void*>(&instance)) T(std::forward<A>(args)...);
 }
 
 /**
@@ -518,15 +517,15 @@ T& online_change(T& old_instance, void* storage, A&&... args) noexcept {
                 "iecoop: online_change copies the old instance into the new one by assignment, which a block "
                 "declared no_assign refuses; relocate it with reset() (its values start anew), or drop no_assign");
   alignas(T) unsigned char saved_storage[sizeof(T)];
-  T* saved = std::construct_at(reinterpret_cast<T*>(saved_storage), std::as_const(old_instance));
+  T* saved = ::new (static_cast<void*>(saved_storage)) T(std::as_const(old_instance));
   {
     detail::lifecycle_scope exiting({false, true, false, false});
-    std::destroy_at(&old_instance);
+    old_instance.~T();
   }
   T* fresh = nullptr;
   {
     detail::lifecycle_scope initialising({false, true, false, false});
-    fresh = std::construct_at(static_cast<T*>(storage), std::forward<A>(args)...);
+    fresh = ::new (storage) T(std::forward<A>(args)...);
   }
   {
     detail::lifecycle_scope copying({false, true, false, true});
@@ -535,7 +534,7 @@ T& online_change(T& old_instance, void* storage, A&&... args) noexcept {
   if constexpr (detail::has_fb_reinit<T>) block_access::fb_reinit(*fresh);
   {
     detail::lifecycle_scope discarding({false, false, true, false});
-    std::destroy_at(saved);
+    saved->~T();
   }
   return *fresh;
 }

@@ -8,7 +8,6 @@
 
 #include <array>
 #include <cstddef>
-#include <memory>
 #include <new>
 #include <tuple>
 #include <utility>
@@ -37,7 +36,7 @@ class instance_store<type_list<Ts...>> {
     return *std::launder(reinterpret_cast<T*>(std::get<instance_slot<T>>(slots_).bytes));
   }
   /// Constructs every instance, in order.
-  void construct_all() { (std::construct_at(reinterpret_cast<Ts*>(std::get<instance_slot<Ts>>(slots_).bytes)), ...); }
+  void construct_all() { (::new (static_cast<void*>(std::get<instance_slot<Ts>>(slots_).bytes)) Ts(), ...); }
   /// Destroys every instance, in reverse order.
   void destroy_all() { destroy_reversed(std::make_index_sequence<sizeof...(Ts)>{}); }
 
@@ -50,7 +49,12 @@ class instance_store<type_list<Ts...>> {
   template <std::size_t... I>
   void destroy_reversed(std::index_sequence<I...>) {
     using types = std::tuple<Ts...>;
-    (std::destroy_at(&get<std::tuple_element_t<sizeof...(Ts) - 1 - I, types>>()), ...);
+    (destroy(get<std::tuple_element_t<sizeof...(Ts) - 1 - I, types>>()), ...);
+  }
+
+  template <class T>
+  static void destroy(T& instance) noexcept {
+    instance.~T();
   }
 
   std::tuple<instance_slot<Ts>...> slots_;

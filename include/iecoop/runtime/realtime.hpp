@@ -23,11 +23,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstdint>
 #include <thread>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/runtime/application.hpp>
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/types/time.hpp>

@@ -19,7 +19,6 @@
 #pragma once
 
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -30,6 +29,7 @@
 #include <thread>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/runtime/cycle_observer.hpp>
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/trace/channels.hpp>

@@ -22,7 +22,6 @@
 // message. A point never converts implicitly to a number: use DATE_TO_UDINT(d) and friends.
 #pragma once
 
-#include <chrono>
 #include <compare>
 #include <cstdint>
 #include <limits>
@@ -31,6 +30,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/scalar_access.hpp>

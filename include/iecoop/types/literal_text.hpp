@@ -8,14 +8,13 @@
 // time.
 #pragma once
 
-#include <charconv>
+#include <charconv>  // also std::errc, which from_chars reports (not <system_error>: its <stdexcept> and <string>)
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <numeric>
 #include <string_view>
-#include <system_error>
 #include <type_traits>
 
 #include <iecoop/config.hpp>

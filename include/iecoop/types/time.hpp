@@ -9,7 +9,6 @@
 // it does on those PLCs: T#0ms - T#1ms is T#49d17h2m47s295ms.
 #pragma once
 
-#include <chrono>
 #include <compare>
 #include <concepts>
 #include <cstdint>
@@ -19,6 +18,7 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/float_to_int.hpp>
 #include <iecoop/detail/iec_value.hpp>
