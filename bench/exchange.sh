@@ -33,7 +33,7 @@ echo "== exchange: building with $compiler in $dir" >&2
 cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_BUILD_TYPE=Release -DIECOOP_BUILD_BENCH=ON \
   -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_EXAMPLES=OFF -DIECOOP_BUILD_TOOLS=OFF -DIECOOP_BUILD_CHECK=OFF \
   -DIECOOP_INSTALL=OFF >/dev/null
-cmake --build "$dir" -j "$(nproc 2>/dev/null || echo 2)" --target iecoop_bench_exchange iecoop_exchange_jitter >/dev/null
+cmake --build "$dir" -j "$(iecoop_jobs)" --target iecoop_bench_exchange iecoop_exchange_jitter >/dev/null
 
 echo "== exchange: the cycle's cost (5 repetitions, medians)" >&2
 echo "| Benchmark | Words each way (MQTT: channels) | ns per cycle | ns per word (channel) |"

@@ -30,7 +30,7 @@ shift $((OPTIND - 1))
 [ $# -gt 0 ] || set -- g++ clang++-14 clang++-16
 iecoop_require_packages cmake make g++ clang-14 clang-16 libbenchmark-dev valgrind
 
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=$(iecoop_jobs)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

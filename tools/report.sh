@@ -10,9 +10,9 @@ cd "$(dirname "$0")/.."
 iecoop_require_packages cmake make g++ libbenchmark-dev valgrind python3
 
 out=build/report
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=$(iecoop_jobs)
 cmake -S . -B "$out" -DCMAKE_BUILD_TYPE=Release -DIECOOP_WERROR=ON \
-  -DIECOOP_BUILD_TESTS=OFF -DIECOOP_BUILD_EXAMPLES=OFF -DIECOOP_BUILD_TOOLS=OFF >/dev/null
+  -DIECOOP_BUILD_BENCH=ON >/dev/null
 cmake --build "$out" --target iecoop_bench iecoop_bench_count -j "$jobs" >/dev/null
 
 echo "== iecoop: running the benchmarks" >&2

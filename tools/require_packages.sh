@@ -22,3 +22,14 @@ iecoop_require_packages() {
   # shellcheck disable=SC2086 # the package list is meant to split
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing
 }
+
+# iecoop_jobs: how many jobs a script's builds and tests run at once: CMAKE_BUILD_PARALLEL_LEVEL
+# where it is set (CMake's own variable, so a shared machine's setting holds for every build),
+# else the number of cores.
+iecoop_jobs() {
+  if [ -n "${CMAKE_BUILD_PARALLEL_LEVEL:-}" ]; then
+    echo "$CMAKE_BUILD_PARALLEL_LEVEL"
+  else
+    nproc 2>/dev/null || echo 2
+  fi
+}

@@ -18,7 +18,8 @@
 #      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
 #      (CTest label `embedded`; see docs/embedded.md).
 # Installs the Debian packages it needs first, the cross toolchain and QEMU included; if they
-# cannot be installed, it fails.
+# cannot be installed, it fails. Builds and tests run CMAKE_BUILD_PARALLEL_LEVEL jobs at once
+# where it is set (a shared machine), else one per core.
 set -eu
 cd "$(dirname "$0")/.."
 started=$(date +%s)
@@ -42,7 +43,9 @@ iecoop_require_packages gtkwave librsvg2-bin libxml2-utils
 # and only recommends), the mosquitto broker and its clients.
 iecoop_require_packages pkg-config libmodbus-dev libmosquitto-dev mosquitto mosquitto-clients mbpoll python3-pymodbus \
   python3-serial-asyncio
-for tool in arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm vcd2fst fst2vcd rsvg-convert xmllint mbpoll mosquitto_sub; do
+# gcovr: iecoop_coverage()'s reports (docs/testing.md, "Coverage"; test consumer.coverage).
+iecoop_require_packages gcovr
+for tool in gcovr arm-none-eabi-gcc arm-none-eabi-g++ qemu-system-arm vcd2fst fst2vcd rsvg-convert xmllint mbpoll mosquitto_sub; do
   command -v "$tool" >/dev/null 2>&1 || { echo "iecoop: $tool is missing: the tests that need it cannot run" >&2; exit 1; }
 done
 
@@ -50,7 +53,7 @@ done
 echo "== iecoop: layout (clang-format-16)"
 sh tools/format.sh --check
 
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=$(iecoop_jobs)
 
 # Each stage ends with the minutes and seconds since the start (CI's budget is 20 minutes).
 elapsed() {
@@ -81,8 +84,8 @@ run() {
 firmware() {
   echo "== iecoop: $1 firmware under QEMU"
   cmake --preset "$1"
-  cmake --build --preset "$1"
-  ctest --preset "$1"
+  cmake --build --preset "$1" -j "$jobs"
+  ctest --preset "$1" -j "$jobs"
   elapsed "$1 firmware"
 }
 

@@ -1,5 +1,5 @@
-// Reference charts SFC_ALT and SFC_ALT_PRIO (../shared/reference/sfc/SFC_ALT.st and
-// SFC_ALT_PRIO.st), ported line by line: an alternative divergence INIT -> BR_A | BR_B, the two
+// Reference charts SFC_ALT and SFC_ALT_PRIO (their textual SFC in the comments; stimuli and
+// traces in tests/replay/sfc/SFC_ALT.* and SFC_ALT_PRIO.*), ported line by line: an alternative divergence INIT -> BR_A | BR_B, the two
 // branches converging on JOIN, and a jump from BR_B back to INIT on ABORT. SFC_ALT gives no
 // priorities: the transition declared first (the left-most branch) wins. SFC_ALT_PRIO gives
 // INIT -> BR_B and BR_B -> JOIN priority 1. The scan order is the template argument.

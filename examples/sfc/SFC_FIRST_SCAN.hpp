@@ -1,4 +1,4 @@
-// Reference chart SFC_FIRST_SCAN (../shared/reference/sfc/SFC_FIRST_SCAN.st), ported line by
+// Reference chart SFC_FIRST_SCAN (its textual SFC in the comments; stimulus and traces in tests/replay/sfc/SFC_FIRST_SCAN.*), ported line by
 // line: INIT (initial, with an N, a P and a P0 action) and S1; INIT -> S1 on GO, S1 -> INIT on
 // BACK, and a self-loop INIT -> INIT on AGAIN (declared after GO). Replayed with GO TRUE on the
 // very first scan (SFC_FIRST_SCAN.stimulus.csv) and with GO FALSE then

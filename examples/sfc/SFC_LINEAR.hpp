@@ -1,4 +1,4 @@
-// Reference chart SFC_LINEAR (../shared/reference/sfc/SFC_LINEAR.st), ported line by line: a
+// Reference chart SFC_LINEAR (its textual SFC in the comments; stimulus and traces in tests/replay/sfc/SFC_LINEAR.*), ported line by line: a
 // linear sequence INIT -> FILL -> PULSE -> HEAT -> CNT -> back to INIT. FILL leaves on FILL.T >=
 // 50 ms; PULSE leaves unconditionally (active for one scan); HEAT on HEAT.T > 25 ms AND NOT
 // START; CNT clears K with a P action, increments it with an N action and leaves on K >= 3 (a

@@ -1,4 +1,4 @@
-// Reference chart SFC_PAR (../shared/reference/sfc/SFC_PAR.st), ported line by line: a
+// Reference chart SFC_PAR (its textual SFC in the comments; stimulus and traces in tests/replay/sfc/SFC_PAR.*), ported line by line: a
 // simultaneous divergence INIT -> (P1, Q1) on GO; branch P: P1 -> P2 on P1.T >= 30 ms; branch
 // Q: Q1 -> Q2 on IN_Q; a simultaneous convergence (P2, Q2) -> JOIN on IN_J, enabled only when
 // both P2 and Q2 are active; JOIN -> INIT on JOIN.T >= 20 ms. The scan order is the template

@@ -1,4 +1,4 @@
-// Reference chart SFC_QUAL (../shared/reference/sfc/SFC_QUAL.st), ported line by line: the
+// Reference chart SFC_QUAL (its textual SFC in the comments; stimulus and traces in tests/replay/sfc/SFC_QUAL.*), ported line by line: the
 // untimed qualifiers N, S, R, P, P1, P0 on a chain INIT -> S1 -> S2 -> S3 -> INIT, each
 // transition on NEXT. S1 associates the actions A_N(N), A_S(S), A_P(P), A_P1(P1), A_P0(P0) and
 // the BOOL variables V_N(N), V_S(S), V_P(P); S2 none (A_S and V_S stay stored); S3 resets A_S

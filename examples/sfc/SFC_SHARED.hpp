@@ -1,4 +1,4 @@
-// Reference chart SFC_SHARED (../shared/reference/sfc/SFC_SHARED.st), ported line by line: one
+// Reference chart SFC_SHARED (its textual SFC in the comments; stimulus and traces in tests/replay/sfc/SFC_SHARED.*), ported line by line: one
 // action associated with several steps. A_SH is associated N with S1 and with S2 (the
 // associations combine with OR: it runs once per scan); S2 goes back to S1 on BACK (declared
 // first) or on to S3 on NEXT AND NOT BACK; A_Q is associated N with S1 and P with S3. The scan

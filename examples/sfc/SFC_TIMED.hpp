@@ -1,4 +1,4 @@
-// Reference chart SFC_TIMED (../shared/reference/sfc/SFC_TIMED.st), ported line by line: the
+// Reference chart SFC_TIMED (its textual SFC in the comments; stimulus and traces in tests/replay/sfc/SFC_TIMED.*), ported line by line: the
 // timed qualifiers L, D, SD, DS, SL, all with T#30ms, on a chain INIT -> S1 -> S2 -> S3 -> S4 ->
 // INIT, each transition on NEXT. S1: A_L(L), A_D(D) and the BOOL variables V_L(L), V_D(D); S2:
 // A_SD(SD), A_DS(DS), A_SL(SL); S3: nothing (waits between S2 and the resets); S4 resets A_SD,

@@ -12,7 +12,7 @@
 #endif
 
 #define IECOOP_VERSION_MAJOR 0
-#define IECOOP_VERSION_MINOR 1
+#define IECOOP_VERSION_MINOR 2
 #define IECOOP_VERSION_PATCH 0
 /// The version as one number: major * 10000 + minor * 100 + patch.
 #define IECOOP_VERSION (IECOOP_VERSION_MAJOR * 10000 + IECOOP_VERSION_MINOR * 100 + IECOOP_VERSION_PATCH)

@@ -1,5 +1,5 @@
 // iecoop-replay's SFC charts: the eight reference charts of examples/sfc, each with the columns
-// its trace has (../shared/reference/sfc/<chart>.columns): the inputs, then for each step
+// its trace has (tests/replay/sfc/<chart>.columns): the inputs, then for each step
 // <step>_X and <step>_T_ms, then the program's other variables (a TIME as <name>_ms).
 #pragma once
 
