@@ -56,7 +56,8 @@ foreach(header IN LISTS headers)
   endif()
 endforeach()
 foreach(file share/cmake/iecoop/iecoopConfig.cmake share/cmake/iecoop/iecoopConfigVersion.cmake
-             share/cmake/iecoop/iecoopTargets.cmake share/pkgconfig/iecoop.pc)
+             share/cmake/iecoop/iecoopTargets.cmake share/pkgconfig/iecoop.pc share/doc/iecoop/LICENSE
+             share/doc/iecoop/CHANGELOG.md)
   if(NOT EXISTS ${root}/${file})
     message(FATAL_ERROR "packages: the ${KIND} package lacks ${file}")
   endif()
@@ -70,5 +71,5 @@ step(${CMAKE_CTEST_COMMAND} --build-and-test ${SOURCE_DIR}/tests/consumer/find_p
      --build-options -DCMAKE_CXX_COMPILER=${COMPILER} -DCMAKE_PREFIX_PATH=${root} -DIECOOP_EXPECT_CHECK=OFF
                      -DIECOOP_CONSUMER_KIT=OFF
      --test-command iecoop_consumer)
-message("packages: the ${KIND} package holds the ${header_count} headers and the CMake and pkg-config files, "
-        "and a project built with it")
+message("packages: the ${KIND} package holds the ${header_count} headers, the CMake and pkg-config files and "
+        "the licence, and a project built with it")
