@@ -28,7 +28,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -44,6 +43,7 @@
 #include <netinet/in.h>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/exchange/image_window.hpp>
 #include <iecoop/exchange/modbus_library.hpp>
 #include <iecoop/exchange/triple_buffer.hpp>

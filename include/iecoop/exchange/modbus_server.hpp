@@ -24,7 +24,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -43,6 +42,7 @@
 #include <unistd.h>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/exchange/image_window.hpp>
 #include <iecoop/exchange/modbus_library.hpp>
 #include <iecoop/exchange/triple_buffer.hpp>

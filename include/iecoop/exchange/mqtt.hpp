@@ -51,7 +51,6 @@
 #include <array>
 #include <atomic>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
@@ -67,6 +66,7 @@
 #include <vector>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/detail/value_operators.hpp>
 #include <iecoop/exchange/mqtt_library.hpp>
