@@ -41,6 +41,10 @@ function(iecoop_coverage target)
   else()
     message(FATAL_ERROR "iecoop_coverage(${target}): coverage needs g++ or clang++, not ${CMAKE_CXX_COMPILER_ID}")
   endif()
+  if(gcov MATCHES "NOTFOUND")
+    message(FATAL_ERROR "iecoop_coverage(${target}): no gcov for ${CMAKE_CXX_COMPILER_ID} ${major} "
+                        "(g++: gcov-${major}, Debian's gcc-${major}; clang++: llvm-cov-${major}, Debian's llvm-${major})")
+  endif()
   target_compile_options(${target} PRIVATE --coverage)
   target_link_options(${target} PRIVATE --coverage)
   # gcovr's filters are regular expressions over absolute paths: each source's path, escaped.
