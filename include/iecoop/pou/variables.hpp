@@ -146,17 +146,10 @@ class variable_value : public condition_conversion<variable_value<T, Open>, T>,
   }
 
  protected:
-  constexpr variable_value()
-    requires(!std::is_enum_v<T>)
-  = default;
-  /// A variable of an enumeration: its start, or (temp<>, retain<>, ...; local<> refuses it
-  /// itself, nearer the user's line) refused where iecoop does not know it. Checked when the
-  /// constructor is used, so that enum_components<E> may be declared after the variable.
-  constexpr variable_value() noexcept
-    requires(std::is_enum_v<T>)
-      : value_(enum_start_or_zero<T>()) {
-    refuse_unknown_enum_start<T>();
-  }
+  /// A variable of an enumeration starts through its wrapper's own constructor (local<>,
+  /// read_only<>, temp<>, retain<>, persistent<>), which refuses an unknown start one step
+  /// from the user's line; were one to default here, initial_value would refuse it.
+  constexpr variable_value() = default;
   constexpr explicit variable_value(const T& initial) : value_(initial) {}
 
   // Values are copied as scalars (detail/scalar_access.hpp), so that the optimiser sees
