@@ -5,10 +5,11 @@ Measures, for g++ and clang++ (and clang++-16 where installed):
   - stl:      a translation unit of a typical C++ program's standard headers, the baseline;
   - umbrella: one that includes only <iecoop/iecoop.hpp>, at -O0 (a PLC engineer's edit loop);
   - each public header alone, at -O0 (what a user of one layer pays);
-  - the demo and each feature example, at -O2.
+  - the demo's five translation units and each feature example, at -O2.
 Each figure is the median of --runs compilations (the compilers and the files take turns, so a
 busy moment of a shared machine spreads over all of them), with the spread (min..max). Prints a
-Markdown table and the machine's CPU; `--only umbrella` (or stl, headers, examples) for a part.
+Markdown table and the machine's CPU; `--only umbrella` (or stl, headers, examples) for a part,
+`--only demo` for the STL baseline, the umbrella and the demo's translation units side by side.
 
     python3 bench/compile_time.py [--runs 5] [--only umbrella] [--compilers g++ clang++]
 """
@@ -51,12 +52,12 @@ def public_headers():
 def cases(only, scratch):
     """(name, source file, optimisation, extra flags) of every translation unit measured."""
     result = []
-    if only in (None, "stl", "umbrella"):
+    if only in (None, "stl", "umbrella", "demo"):
         stl = os.path.join(scratch, "stl.cpp")
         with open(stl, "w") as f:
             f.write("".join(f"#include <{h}>\n" for h in STL_HEADERS) + "int main() {}\n")
         result.append(("STL baseline (" + ", ".join(STL_HEADERS) + ")", stl, "-O0", []))
-    if only in (None, "umbrella"):
+    if only in (None, "umbrella", "demo"):
         umbrella = os.path.join(scratch, "umbrella.cpp")
         with open(umbrella, "w") as f:
             f.write("#include <iecoop/iecoop.hpp>\nint main() {}\n")
@@ -69,14 +70,33 @@ def cases(only, scratch):
             with open(source, "w") as f:
                 f.write(f"#include <{header}>\nint main() {{}}\n")
             result.append((f"<{header}>", source, "-O0", []))
+    examples = os.path.join(ROOT, "examples")
+    if only in (None, "examples", "demo"):
+        # The demo's five translation units; its network part as CMake builds it where libmodbus
+        # and libmosquitto are installed (else without them, and the table says so).
+        for name in ("demo.cpp", "demo_print.cpp", "demo_realtime.cpp", "demo_trace.cpp"):
+            result.append((f"examples/{name}", os.path.join(examples, name), "-O2", []))
+        network = exchange_flags()
+        label = "examples/demo_exchange.cpp" + ("" if network else " (without libmodbus, libmosquitto)")
+        result.append((label, os.path.join(examples, "demo_exchange.cpp"), "-O2", network))
     if only in (None, "examples"):
-        examples = os.path.join(ROOT, "examples")
-        result.append(("examples/demo.cpp", os.path.join(examples, "demo.cpp"), "-O2", []))
         features = os.path.join(examples, "features")
         for name in sorted(os.listdir(features)):
             if name.endswith(".cpp"):
                 result.append((f"examples/features/{name}", os.path.join(features, name), "-O2", []))
     return result
+
+
+def exchange_flags():
+    """-D and -I flags of the demo's Modbus server and MQTT bridge, or [] where pkg-config does
+    not find libmodbus and libmosquitto."""
+    try:
+        done = subprocess.run(["pkg-config", "--cflags", "libmodbus", "libmosquitto"], capture_output=True, text=True)
+    except OSError:
+        return []
+    if done.returncode != 0:
+        return []
+    return ["-DIECOOP_DEMO_MODBUS=1", "-DIECOOP_DEMO_MQTT=1"] + done.stdout.split()
 
 
 def compile_once(compiler, source, optimisation, extra, scratch):
@@ -93,7 +113,7 @@ def compile_once(compiler, source, optimisation, extra, scratch):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=5)
-    parser.add_argument("--only", choices=["stl", "umbrella", "headers", "examples"])
+    parser.add_argument("--only", choices=["stl", "umbrella", "headers", "examples", "demo"])
     parser.add_argument("--compilers", nargs="+")
     options = parser.parse_args()
     compilers = options.compilers or [c for c in ("g++", "clang++", "clang++-16") if shutil.which(c)]

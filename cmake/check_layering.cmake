@@ -1,7 +1,7 @@
 # cmake -DINCLUDE_DIR=<dir> -P check_layering.cmake
 # Checks that iecoop's headers include only downwards (docs/design.md, "The headers follow
 # the parts of IEC 61131-3, in layers"):
-#   config.hpp, fault.hpp            1  (used by every layer, as are detail/ headers)
+#   config.hpp, fault.hpp, detail/  1  (used by every layer)
 #   types/                           2
 #   pou/                             3
 #   standard/, sfc/                  4  (sfc/: charts, on the standard blocks' cycle clock)
@@ -12,7 +12,9 @@
 #   ostream.hpp, exchange/               (exchange/: Modbus and MQTT, over the image and the trace's channels)
 #   testing/, testing.hpp            9  (the test kit: on doctest, over everything above)
 # A detail/ header is shared machinery: it takes the layer of the highest header it includes
-# (at least 1), and may build on types/ but on nothing above.
+# (at least 1) and must stay at 1, building on nothing but config.hpp, fault.hpp and other
+# detail/ headers. Machinery that serves one layer lives beside it, in <layer>/detail/, and has
+# that layer's rank (types/detail/value_operators.hpp is a types/ header).
 cmake_minimum_required(VERSION 3.25)
 if(NOT INCLUDE_DIR)
   message(FATAL_ERROR "usage: cmake -DINCLUDE_DIR=<dir> -P check_layering.cmake")
@@ -28,7 +30,7 @@ set(rank_runtime 6)
 set(rank_trace 7)
 set(rank_exchange 8)
 set(rank_testing 9)
-set(detail_ceiling 2)
+set(detail_ceiling 1)
 
 file(GLOB_RECURSE headers RELATIVE ${INCLUDE_DIR} ${INCLUDE_DIR}/iecoop/*.hpp)
 
@@ -85,8 +87,8 @@ set(violations 0)
 foreach(header IN LISTS headers)
   if(header MATCHES "^iecoop/detail/")
     if(rank_of_${header} GREATER detail_ceiling)
-      message(SEND_ERROR "iecoop: ${header} is shared machinery (detail/) but builds on a layer above types/; "
-                         "move it into the layer it serves, or take out that include")
+      message(SEND_ERROR "iecoop: ${header} is shared machinery (detail/) but builds on a layer (types/ or above); "
+                         "move it beside the layer it serves (<layer>/detail/), or take out that include")
       math(EXPR violations "${violations} + 1")
     endif()
     continue()

@@ -16,9 +16,9 @@
 #include <fmt/format.h>
 
 #include <iecoop/detail/utf8.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>

@@ -11,11 +11,20 @@
 #include <iecoop/fault.hpp>
 
 // types/: the elementary data types, their literals and conversions (IEC 61131-3 6.3, 6.4)
-// (enumeration.hpp and initial_value.hpp first: a refused start value is then reported one
-// include deep, which keeps the user's own line within the first lines of clang's report)
+// (the elementary types' headers, then enumeration.hpp and initial_value.hpp, first: a refused
+// conversion, operation or start value is then reported one include deep, which keeps the
+// user's own line within the first lines of the compiler's report)
+#include <iecoop/types/detail/elementary_traits.hpp>  // IWYU pragma: keep
+
+#include <iecoop/types/bool.hpp>
+
+#include <iecoop/types/integer.hpp>
+
+#include <iecoop/types/real.hpp>
+
 #include <iecoop/types/enumeration.hpp>
 
-#include <iecoop/detail/initial_value.hpp>  // IWYU pragma: keep
+#include <iecoop/types/detail/initial_value.hpp>  // IWYU pragma: keep
 
 #include <iecoop/types/array.hpp>
 #include <iecoop/types/bit_access.hpp>

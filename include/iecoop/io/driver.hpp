@@ -29,11 +29,11 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/fixed_string.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/io/address.hpp>
 #include <iecoop/io/footprint.hpp>
 #include <iecoop/io/process_image.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

@@ -32,9 +32,9 @@
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/fixed_string.hpp>
 #include <iecoop/detail/meta.hpp>
-#include <iecoop/detail/type_hash.hpp>
 #include <iecoop/io/address.hpp>
 #include <iecoop/io/process_image.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

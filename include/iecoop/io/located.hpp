@@ -25,12 +25,12 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/fixed_string.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/io/access_checks.hpp>
 #include <iecoop/io/address.hpp>
 #include <iecoop/io/image_codec.hpp>
 #include <iecoop/io/process_image.hpp>
 #include <iecoop/pou/call_interface.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/time.hpp>
 

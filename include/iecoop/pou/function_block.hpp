@@ -29,7 +29,6 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
-#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
@@ -38,6 +37,7 @@
 #include <iecoop/pou/interface.hpp>
 #include <iecoop/pou/named_arguments.hpp>
 #include <iecoop/pou/variables.hpp>
+#include <iecoop/types/detail/initial_value.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

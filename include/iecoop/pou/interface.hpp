@@ -40,9 +40,9 @@
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/meta.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

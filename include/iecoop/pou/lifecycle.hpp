@@ -37,12 +37,12 @@
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/detail/reflect.hpp>
-#include <iecoop/detail/type_hash.hpp>
 #include <iecoop/pou/attributes.hpp>
 #include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/interface.hpp>
 #include <iecoop/pou/method.hpp>
 #include <iecoop/pou/named_arguments.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

@@ -32,10 +32,10 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
-#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/reflect.hpp>
 #include <iecoop/pou/named_arguments.hpp>
 #include <iecoop/pou/variables.hpp>
+#include <iecoop/types/detail/initial_value.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

@@ -17,8 +17,8 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/fixed_string.hpp>
 #include <iecoop/detail/scalar_access.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/time.hpp>
 

@@ -42,8 +42,8 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

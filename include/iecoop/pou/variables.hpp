@@ -16,12 +16,12 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/scalar_access.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/types/array.hpp>
+#include <iecoop/types/detail/initial_value.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

@@ -37,7 +37,6 @@
 #include <string_view>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/detail/lifecycle_state.hpp>
 #include <iecoop/detail/single_instance.hpp>
 #include <iecoop/fault.hpp>
@@ -51,6 +50,7 @@
 #include <iecoop/runtime/scheduler.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/runtime/task_cycles.hpp>
+#include <iecoop/standard/detail/duration_argument.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

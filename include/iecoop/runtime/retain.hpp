@@ -35,11 +35,11 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/scalar_access.hpp>
-#include <iecoop/detail/type_hash.hpp>
-#include <iecoop/detail/value_operators.hpp>
-#include <iecoop/detail/value_validity.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/variables.hpp>
+#include <iecoop/runtime/detail/value_validity.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
 

@@ -18,12 +18,12 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/meta.hpp>
-#include <iecoop/detail/type_hash.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/io/driver.hpp>
 #include <iecoop/runtime/cycle_observer.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

@@ -33,12 +33,14 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/detail/reflect.hpp>
-#include <iecoop/detail/type_hash.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/variables.hpp>
+#include <iecoop/sfc/detail/bit_set.hpp>
+#include <iecoop/sfc/detail/chart_elements.hpp>
 #include <iecoop/sfc/elements.hpp>
 #include <iecoop/sfc/step.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -47,202 +49,7 @@
 
 namespace iecoop::sfc {
 
-namespace detail {
-
-using iecoop::detail::type_list;
-
-struct engine_access {
-  static constexpr void name(step_name_view& view, std::string_view name) noexcept { view.name_ = name; }
-  template <class T, class O>
-  static constexpr T& ref(read_only<T, O>& variable) noexcept {
-    return iecoop::detail::read_only_access::ref(variable);
-  }
-};
-
-// --- The element lists ----------------------------------------------------------------------
-
-template <element_kind K, class List>
-struct only;
-template <element_kind K>
-struct only<K, type_list<>> {
-  using type = type_list<>;
-};
-template <element_kind K, class E, class... Es>
-struct only<K, type_list<E, Es...>> {
-  using rest = typename only<K, type_list<Es...>>::type;
-  using type =
-      std::conditional_t<E::iecoop_sfc_element == K, typename iecoop::detail::concat<type_list<E>, rest>::type, rest>;
-};
-
-template <class T>
-concept chart_element = requires {
-  { T::iecoop_sfc_element } -> std::convertible_to<element_kind>;
-} && (T::iecoop_sfc_element == element_kind::step || T::iecoop_sfc_element == element_kind::transition);
-
-template <class... Es>
-struct split_order {
-  using order = codesys;
-  using elements = type_list<Es...>;
-};
-template <ScanOrder O, class... Es>
-struct split_order<O, Es...> {
-  using order = O;
-  using elements = type_list<Es...>;
-};
-
-template <std::size_t I, class List>
-struct at;
-template <std::size_t I, class E, class... Es>
-struct at<I, type_list<E, Es...>> : at<I - 1, type_list<Es...>> {};
-template <class E, class... Es>
-struct at<0, type_list<E, Es...>> {
-  using type = E;
-};
-template <std::size_t I, class List>
-using at_t = typename at<I, List>::type;
-
-template <class List>
-struct length;
-template <class... Es>
-struct length<type_list<Es...>> : std::integral_constant<std::size_t, sizeof...(Es)> {};
-
-/// One action, whatever the steps that name it.
-template <auto A>
-struct action_tag {
-  static constexpr auto value = A;
-};
-
-template <class Steps>
-struct actions_of;
-template <class... Steps>
-struct actions_of<type_list<Steps...>> {
-  template <class Item, bool = Item::iecoop_sfc_element == element_kind::association>
-  struct tag_of {
-    using type = type_list<>;
-  };
-  template <class Item>
-  struct tag_of<Item, true> {
-    using type = type_list<action_tag<Item::action>>;
-  };
-  template <class Items>
-  struct named;
-  template <class... Items>
-  struct named<type_list<Items...>> {
-    using type = typename iecoop::detail::concat<type_list<>, typename tag_of<Items>::type...>::type;
-  };
-  template <class List>
-  struct unique;
-  template <class... Tags>
-  struct unique<type_list<Tags...>> {
-    using type = typename iecoop::detail::push_all<type_list<>, Tags...>::type;
-  };
-  using type =
-      typename unique<typename iecoop::detail::concat<typename named<typename Steps::items>::type...>::type>::type;
-};
-
-// --- Calling the POU's members ------------------------------------------------------------
-
-template <class M>
-struct bool_member : std::false_type {};
-template <class C>
-struct bool_member<BOOL C::*> : std::true_type {};
-
-/// Whether `Action` can be an action of POU: a member function without parameters, or a BOOL.
-template <class POU, auto Action>
-inline constexpr bool valid_action =
-    bool_member<decltype(Action)>::value ||
-    (std::is_member_function_pointer_v<decltype(Action)> && std::is_invocable_v<decltype(Action), POU&>);
-
-/// Whether Condition is a BOOL condition on the complete POU: `true`, or a member, a method or
-/// a callable whose result converts to BOOL (elements.hpp's bool_result: no number does).
-template <class POU, auto Condition>
-consteval bool valid_condition() noexcept {
-  using C = decltype(Condition);
-  if constexpr (std::is_same_v<C, bool>) {
-    return true;
-  } else if constexpr (std::is_invocable_v<C, POU&>) {
-    return bool_result<std::invoke_result_t<C, POU&>>;
-  } else {
-    return false;
-  }
-}
-
-/// The first of the transitions `Trs` (a type_list) whose condition is no BOOL on the complete
-/// POU, void if none: a generic callable (`[](auto& p) {...}`), which the TRANSITION could
-/// not check where it is declared.
-template <class POU, class Trs>
-struct first_non_bool_condition {
-  using type = void;
-};
-template <class POU, class Tr, class... Trs>
-struct first_non_bool_condition<POU, type_list<Tr, Trs...>>
-    : std::conditional_t<valid_condition<POU, Tr::condition>(), first_non_bool_condition<POU, type_list<Trs...>>,
-                         std::type_identity<Tr>> {};
-
-template <auto Condition, class POU>
-bool test(POU& pou) {
-  using C = decltype(Condition);
-  if constexpr (std::is_same_v<C, bool>) {
-    return Condition;
-  } else if constexpr (!valid_condition<POU, Condition>()) {
-    return false;  // refused by the chart's operator() (no second error here)
-  } else if constexpr (std::is_member_object_pointer_v<C>) {
-    return static_cast<bool>(pou.*Condition);
-  } else if constexpr (std::is_member_function_pointer_v<C>) {
-    return static_cast<bool>((pou.*Condition)());
-  } else {
-    return static_cast<bool>(Condition(pou));
-  }
-}
-
-// --- Structural checks (each names the offending step in its template argument) -------------
-
-template <auto Step>
-consteval void step_declared_twice() {
-  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
-                "iecoop: an SFC step is declared twice (the step in the template argument); declare each STEP once");
-}
-template <auto Step>
-consteval void step_not_in_chart() {
-  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
-                "iecoop: a TRANSITION names a step that is no STEP of the chart (the step in the template argument); "
-                "add sfc::STEP<&P::step> or fix the name");
-}
-template <auto Step>
-consteval void step_never_left() {
-  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
-                "iecoop: no TRANSITION leaves the step in the template argument; add one FROM it, or mark it "
-                "sfc::final_step");
-}
-template <auto Step>
-consteval void step_unreachable() {
-  static_assert(iecoop::detail::dependent_false<action_tag<Step>>,
-                "iecoop: the step in the template argument cannot be reached from the initial step; add a TRANSITION "
-                "TO it or remove it");
-}
-template <auto Action>
-consteval void invalid_action() {
-  static_assert(iecoop::detail::dependent_false<action_tag<Action>>,
-                "iecoop: an SFC action is a member function of the POU without parameters (an ACTION) or a BOOL member "
-                "(the action in the template argument is neither)");
-}
-inline constexpr std::size_t npos = static_cast<std::size_t>(-1);
-
-/// The control of one IEC action (IEC 61131-3 ACTION_CONTROL, combined over its associations).
-struct control {
-  bool q = false;      // Q of the last scan
-  bool pulse = false;  // ... driven only by P1 or P0 (CODESYS runs those once: no final scan)
-  bool s = false;      // S stored
-  bool sd = false;     // SD stored (its delay running since sd_et = 0)
-  bool ds = false;     // DS stored
-  bool sl = false;     // SL stored (its limit running since sl_et = 0)
-  TIME sd_et{};
-  TIME sl_et{};
-  TIME sd_pt{};
-  TIME sl_pt{};
-};
-
-}  // namespace detail
+// The elements (steps, transitions, actions) as the chart sees them: sfc/detail/chart_elements.hpp.
 
 /**
  * A Sequential Function Chart over the POU `POU`, of the Elements (STEPs, TRANSITIONs), in the
@@ -570,40 +377,11 @@ class chart {
     }(std::make_index_sequence<step_count>{});
   }
 
-  // --- Bit sets ---------------------------------------------------------------------------
+  // --- Bit sets (sfc/detail/bit_set.hpp) ----------------------------------------------------
   // The engine keeps the active steps, the step events of the scan and the actions' Q as bit
   // sets, so that a scan costs per active step and per running action, not per element.
   template <std::size_t N>
-  using bits = std::array<std::uint64_t, (N + 63) / 64 == 0 ? 1 : (N + 63) / 64>;
-
-  template <std::size_t N>
-  static constexpr bool test_bit(const bits<N>& b, std::size_t i) noexcept {
-    return ((b[i / 64] >> (i % 64)) & 1u) != 0;
-  }
-  template <std::size_t N>
-  static constexpr void set_bit(bits<N>& b, std::size_t i) noexcept {
-    b[i / 64] |= std::uint64_t{1} << (i % 64);
-  }
-  template <std::size_t N>
-  static constexpr void clear_bit(bits<N>& b, std::size_t i) noexcept {
-    b[i / 64] &= ~(std::uint64_t{1} << (i % 64));
-  }
-  /// Calls table[i](args...) for every set bit i, lowest first.
-  template <std::size_t N, class Table, class... Args>
-  static void for_each_bit(const bits<N>& b, const Table& table, Args&... args) {
-    for (std::size_t w = 0; w < b.size(); ++w) {
-      for (std::uint64_t m = b[w]; m != 0; m &= m - 1) {
-        table[w * 64 + static_cast<std::size_t>(std::countr_zero(m))](args...);
-      }
-    }
-  }
-  template <std::size_t N>
-  static constexpr bool any(const bits<N>& b) noexcept {
-    for (const std::uint64_t w : b) {
-      if (w != 0) return true;
-    }
-    return false;
-  }
+  using bits = detail::bits<N>;
 
   using step_set = bits<step_count>;
   using action_set = bits<action_count>;
@@ -625,7 +403,7 @@ class chart {
               (
                   [&] {
                     if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
-                      set_bit<action_count>(mask, rank_of[action_index<It::action>()]);
+                      detail::set_bit<action_count>(mask, rank_of[action_index<It::action>()]);
                     }
                   }(),
                   ...);
@@ -647,9 +425,9 @@ class chart {
       T<I>(pou) = TIME{};
     });
     active_ = step_set{};
-    set_bit<step_count>(active_, initial_index);
+    detail::set_bit<step_count>(active_, initial_index);
     entered_ = left_ = activated_ = deactivated_ = step_set{};
-    set_bit<step_count>(entered_, initial_index);  // its activation is seen by the next scan
+    detail::set_bit<step_count>(entered_, initial_index);  // its activation is seen by the next scan
     for (std::size_t a = 0; a < action_count; ++a) {
       controls_[a] = detail::control{};
       detail::engine_access::ref(states_[a].Q) = FALSE;
@@ -709,11 +487,11 @@ class chart {
     static void call(chart& c, POU& pou, TIME) {
       const bool active = X_next<I>(pou);
       X<I>(pou) = BOOL(active);
-      if (test_bit<step_count>(c.activated_, I)) T<I>(pou) = TIME{};
+      if (detail::test_bit<step_count>(c.activated_, I)) T<I>(pou) = TIME{};
       if (active) {
-        set_bit<step_count>(c.active_, I);
+        detail::set_bit<step_count>(c.active_, I);
       } else {
-        clear_bit<step_count>(c.active_, I);
+        detail::clear_bit<step_count>(c.active_, I);
       }
     }
   };
@@ -737,7 +515,7 @@ class chart {
   struct advance_time {
     template <std::size_t I>
     static void call(chart& c, POU& pou, TIME elapsed) {
-      if (!test_bit<step_count>(c.activated_, I)) T<I>(pou) = T<I>(pou) + elapsed;
+      if (!detail::test_bit<step_count>(c.activated_, I)) T<I>(pou) = T<I>(pou) + elapsed;
     }
   };
   struct exit_actions {
@@ -773,7 +551,7 @@ class chart {
               if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
                 if constexpr (It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS) {
                   if (TIME(T<I>(pou) - elapsed) < It::duration) {
-                    set_bit<action_count>(c.dirty_, rank_of[action_index<It::action>()]);
+                    detail::set_bit<action_count>(c.dirty_, rank_of[action_index<It::action>()]);
                   }
                 }
               }
@@ -815,9 +593,9 @@ class chart {
   // The step actions and time checks of the scan, then the actions' controls are marked to be
   // recomputed where a step changed.
   void steps_of_scan(POU& pou, TIME elapsed) {
-    for_each_bit<step_count>(deactivated_, exit_table, *this, pou, elapsed);
-    for_each_bit<step_count>(activated_, entry_table, *this, pou, elapsed);
-    for_each_bit<step_count>(active_, active_table, *this, pou, elapsed);
+    detail::for_each_bit<step_count>(deactivated_, exit_table, *this, pou, elapsed);
+    detail::for_each_bit<step_count>(activated_, entry_table, *this, pou, elapsed);
+    detail::for_each_bit<step_count>(active_, active_table, *this, pou, elapsed);
     for (std::size_t v = 0; v < activated_.size(); ++v) {  // the controls of the changed steps' actions
       for (std::uint64_t m = activated_[v] | deactivated_[v]; m != 0; m &= m - 1) {
         const action_set& mask = step_action_mask[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
@@ -832,7 +610,7 @@ class chart {
   static constexpr step_set sources = [] {
     step_set result{};
     for (const std::size_t s : ends<transition_at<Tr>>::from) {
-      if (s != detail::npos) set_bit<step_count>(result, s);  // a step not in the chart: reported by `checked`
+      if (s != detail::npos) detail::set_bit<step_count>(result, s);  // a step not in the chart: reported by `checked`
     }
     return result;
   }();
@@ -877,7 +655,7 @@ class chart {
   void fire(POU& pou, bool tip) {
     if (SFCTipMode && !tip) return;
     if constexpr (by_step) {
-      for_each_bit<step_count>(active_, fire_table, *this, pou, tip);
+      detail::for_each_bit<step_count>(active_, fire_table, *this, pou, tip);
     } else {
       [&]<std::size_t... K>(std::index_sequence<K...>) {
         (try_fire<transition_order[K]>(pou, tip), ...);
@@ -931,12 +709,13 @@ class chart {
   void activate(POU& pou) {
     // Unsafe: the step is active and stays so (no firing transition leaves it), or two
     // transitions activate it in one scan.
-    if (test_bit<step_count>(entered_, I) || (test_bit<step_count>(active_, I) && !test_bit<step_count>(left_, I))) {
+    if (detail::test_bit<step_count>(entered_, I) ||
+        (detail::test_bit<step_count>(active_, I) && !detail::test_bit<step_count>(left_, I))) {
       fault(fault_kind::unsafe_chart,
             "an SFC transition activated a step that is active already (alternative branches that both lead into "
             "one sequence); the step stays active once");
     }
-    set_bit<step_count>(entered_, I);
+    detail::set_bit<step_count>(entered_, I);
     if constexpr (order::actions_first) X_next<I>(pou) = TRUE;
   }
 
@@ -1022,11 +801,11 @@ class chart {
   void gather_one(POU& pou, inputs& in) const {
     constexpr qualifier q = As::kind;
     if constexpr (q == qualifier::P) {
-      in.p = in.p || test_bit<step_count>(activated_, I);
+      in.p = in.p || detail::test_bit<step_count>(activated_, I);
     } else if constexpr (q == qualifier::P1) {
-      in.p1 = in.p1 || test_bit<step_count>(activated_, I);
+      in.p1 = in.p1 || detail::test_bit<step_count>(activated_, I);
     } else if constexpr (q == qualifier::P0) {
-      in.p0 = in.p0 || test_bit<step_count>(deactivated_, I);
+      in.p0 = in.p0 || detail::test_bit<step_count>(deactivated_, I);
     } else {
       if (!X<I>(pou)) return;
       if constexpr (q == qualifier::N) in.n = true;
@@ -1085,15 +864,15 @@ class chart {
       s.q = q;
       s.pulse = pulse;
       if (q) {
-        set_bit<action_count>(c.q_, K);
+        detail::set_bit<action_count>(c.q_, K);
       } else {
-        clear_bit<action_count>(c.q_, K);
+        detail::clear_bit<action_count>(c.q_, K);
       }
-      if (final_scan && with_body_of<K>) set_bit<action_count>(c.final_, K);
+      if (final_scan && with_body_of<K>) detail::set_bit<action_count>(c.final_, K);
       // Recomputed in the next scan too: after a pulse (its Q falls), while a delay or limit
       // runs, and after a final scan (A falls).
-      if (in.p || in.p1 || in.p0 || final_scan) set_bit<action_count>(c.pulsed_, K);
-      if (s.sd || s.sl) set_bit<action_count>(c.timing_, K);
+      if (in.p || in.p1 || in.p0 || final_scan) detail::set_bit<action_count>(c.pulsed_, K);
+      if (s.sd || s.sl) detail::set_bit<action_count>(c.timing_, K);
       detail::engine_access::ref(c.states_[A].Q) = BOOL(q);
       detail::engine_access::ref(c.states_[A].A) = BOOL(q || final_scan);
       if constexpr (detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value) {
@@ -1125,7 +904,7 @@ class chart {
     [&]<std::size_t... K>(std::index_sequence<K...>) {
       ((detail::bool_member<std::remove_cv_t<decltype(action_at<action_order[K]>)>>::value
             ? void()
-            : set_bit<action_count>(result, K)),
+            : detail::set_bit<action_count>(result, K)),
        ...);
     }(std::make_index_sequence<action_count>{});
     return result;
@@ -1140,11 +919,11 @@ class chart {
       }
       const action_set dirty = dirty_;
       dirty_ = action_set{};
-      for_each_bit<action_count>(dirty, control_table, *this, pou, elapsed);
+      detail::for_each_bit<action_count>(dirty, control_table, *this, pou, elapsed);
       action_set run = q_;
       for (std::size_t w = 0; w < run.size(); ++w) run[w] &= with_body[w];
-      if constexpr (order::actions_first) for_each_bit<action_count>(final_, body_table, pou);
-      for_each_bit<action_count>(run, body_table, pou);
+      if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
+      detail::for_each_bit<action_count>(run, body_table, pou);
     }
   }
 
@@ -1153,17 +932,17 @@ class chart {
     activated_ = entered_;
     deactivated_ = left_;
     entered_ = left_ = step_set{};
-    if (any<step_count>(activated_) || any<step_count>(deactivated_)) {
+    if (detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_)) {
       step_set changed = activated_;
       for (std::size_t w = 0; w < changed.size(); ++w) changed[w] |= deactivated_[w];
-      for_each_bit<step_count>(changed, apply_pending_table, *this, pou, elapsed);
+      detail::for_each_bit<step_count>(changed, apply_pending_table, *this, pou, elapsed);
       current_step();  // the steps the last cycle's transitions activated are active now
     }
-    if (any<step_count>(activated_) || any<step_count>(deactivated_) || has_active_actions) {
-      for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
+    if (detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_) || has_active_actions) {
+      detail::for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
       steps_of_scan(pou, elapsed);
     } else {  // no step changed and no step action: one pass over the active steps
-      for_each_bit<step_count>(active_, advance_and_check_table, *this, pou, elapsed);
+      detail::for_each_bit<step_count>(active_, advance_and_check_table, *this, pou, elapsed);
     }
     iec_actions(pou, elapsed);
     fire(pou, tip);
@@ -1173,11 +952,11 @@ class chart {
     activated_ = entered_;  // only a reset leaves an activation pending
     deactivated_ = step_set{};
     entered_ = left_ = step_set{};
-    for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
+    detail::for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
     fire(pou, tip);
     if (SFCTrans) {
-      for_each_bit<step_count>(left_, apply_left_table, *this, pou, elapsed);
-      for_each_bit<step_count>(entered_, apply_entered_table, *this, pou, elapsed);
+      detail::for_each_bit<step_count>(left_, apply_left_table, *this, pou, elapsed);
+      detail::for_each_bit<step_count>(entered_, apply_entered_table, *this, pou, elapsed);
       for (std::size_t w = 0; w < active_.size(); ++w) {
         active_[w] = (active_[w] & ~left_[w]) | entered_[w];
         activated_[w] |= entered_[w];

@@ -15,7 +15,7 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/generic_arguments.hpp>
+#include <iecoop/standard/detail/generic_arguments.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

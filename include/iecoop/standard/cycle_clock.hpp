@@ -19,7 +19,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/duration_argument.hpp>
+#include <iecoop/standard/detail/duration_argument.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

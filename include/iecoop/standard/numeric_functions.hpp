@@ -22,8 +22,8 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/generic_arguments.hpp>
-#include <iecoop/detail/value_operators.hpp>
+#include <iecoop/standard/detail/generic_arguments.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

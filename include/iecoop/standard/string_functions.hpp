@@ -19,7 +19,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/value_operators.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 

@@ -25,11 +25,11 @@
 #include <utility>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/generic_arguments.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/standard/detail/generic_arguments.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/time.hpp>
 

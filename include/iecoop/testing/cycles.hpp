@@ -24,10 +24,10 @@
 #include <cstdint>
 #include <type_traits>
 
-#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/runtime/task_info.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
+#include <iecoop/standard/detail/duration_argument.hpp>
 #include <iecoop/testing/driver.hpp>
 #include <iecoop/testing/faults.hpp>
 #include <iecoop/types/literals.hpp>

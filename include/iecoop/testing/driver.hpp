@@ -22,8 +22,8 @@
 #include <ostream>
 #include <type_traits>
 
-#include <iecoop/detail/duration_argument.hpp>
 #include <iecoop/ostream.hpp>
+#include <iecoop/standard/detail/duration_argument.hpp>
 #include <iecoop/testing/faults.hpp>
 #include <iecoop/testing/forcing.hpp>
 #include <iecoop/types/elementary.hpp>

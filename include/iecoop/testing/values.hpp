@@ -28,13 +28,13 @@
 
 #include <iecoop/detail/reflect.hpp>
 #include <iecoop/detail/utf8.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/io/located.hpp>
 #include <iecoop/ostream.hpp>
 #include <iecoop/pou/variables.hpp>
 #include <iecoop/runtime/retain.hpp>
 #include <iecoop/sfc/step.hpp>
 #include <iecoop/types/array.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/string.hpp>

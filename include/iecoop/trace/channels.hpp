@@ -28,13 +28,13 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/reflect.hpp>
 #include <iecoop/detail/scalar_access.hpp>
-#include <iecoop/detail/type_hash.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/variables.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>

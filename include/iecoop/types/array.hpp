@@ -25,10 +25,10 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
-#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/meta.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/detail/initial_value.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

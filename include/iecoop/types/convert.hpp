@@ -36,10 +36,10 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/diagnostics.hpp>
-#include <iecoop/detail/float_to_int.hpp>
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/types/date_time.hpp>
 #include <iecoop/types/date_time_text.hpp>
+#include <iecoop/types/detail/float_to_int.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/literal_text.hpp>

@@ -44,8 +44,8 @@
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/parse_result.hpp>
 #include <iecoop/detail/reflect.hpp>
-#include <iecoop/detail/type_hash.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/literal_text.hpp>
 

@@ -18,9 +18,9 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
-#include <iecoop/detail/initial_value.hpp>
 #include <iecoop/detail/meta.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/detail/initial_value.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

@@ -20,10 +20,10 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/detail/diagnostics.hpp>
-#include <iecoop/detail/float_to_int.hpp>
 #include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/scalar_access.hpp>
 #include <iecoop/fault.hpp>
+#include <iecoop/types/detail/float_to_int.hpp>
 #include <iecoop/types/elementary.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

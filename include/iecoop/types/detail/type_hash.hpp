@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/type_hash.hpp — a 32-bit FNV-1a hash, and a type's hash computed from its
+// iecoop/types/detail/type_hash.hpp — a 32-bit FNV-1a hash, and a type's hash computed from its
 // name at compile time, without RTTI: what RETAIN and PERSISTENT images record so that a
 // retyped variable (INT -> UINT) is recognised.
 // IWYU pragma: private, include <iecoop/runtime/retain.hpp>

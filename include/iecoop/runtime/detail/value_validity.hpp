@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/value_validity.hpp — which byte patterns are values of a type: what a RETAIN or
+// iecoop/runtime/detail/value_validity.hpp — which byte patterns are values of a type: what a RETAIN or
 // PERSISTENT image is checked against before its bytes become variables again
 // (<iecoop/runtime/retain_image.hpp>).
 // IWYU pragma: private, include <iecoop/runtime/retain.hpp>
@@ -22,7 +22,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/reflect.hpp>
-#include <iecoop/detail/type_hash.hpp>
+#include <iecoop/types/detail/type_hash.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/subrange.hpp>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/initial_value.hpp — what a variable starts at where its declaration gives no
+// iecoop/types/detail/initial_value.hpp — what a variable starts at where its declaration gives no
 // initial value: ST starts every variable at its type's initial value (0, FALSE, '', T#0s, the
 // first component of an enumeration), where C++ leaves a default-initialised scalar (an enum,
 // an int, a pointer) undefined and value-initialises an enum to 0, which need not be a component.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/duration_argument.hpp — the duration a function that runs simulated time takes
+// iecoop/standard/detail/duration_argument.hpp — the duration a function that runs simulated time takes
 // (the test kit's advance(), run_until()'s timeout, testing::cycles' cycle time; an
 // application's run_for(); cycle_clock::advance()): a TIME, an LTIME, a variable of one or a
 // std::chrono duration, never a bare number. ST has no step from a number to a TIME, and
@@ -11,7 +11,7 @@
 
 #include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
 #include <iecoop/detail/meta.hpp>
-#include <iecoop/detail/value_operators.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>

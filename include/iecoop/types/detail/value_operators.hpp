@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/value_operators.hpp — the operators of iecoop's variable wrappers (var<>,
+// iecoop/types/detail/value_operators.hpp — the operators of iecoop's variable wrappers (var<>,
 // in_out<>, output<>, retain<>, persistent<>, located<>, property<>): in an expression a
 // wrapper is its value, and every wrapper that can be written takes the compound
 // assignments of its type — one implementation for all of them.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/float_to_int.hpp — floating-point to integer without undefined behaviour.
+// iecoop/types/detail/float_to_int.hpp — floating-point to integer without undefined behaviour.
 // IWYU pragma: private, include <iecoop/types/convert.hpp>
 #pragma once
 

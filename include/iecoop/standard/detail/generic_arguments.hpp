@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// iecoop/detail/generic_arguments.hpp — the arguments of IEC's generic (overloaded) standard
+// iecoop/standard/detail/generic_arguments.hpp — the arguments of IEC's generic (overloaded) standard
 // functions: MAX(a, b, c), LIMIT(mn, x, mx), MUX(k, ...), ADD(a, b, ...), GT(a, b, c).
 //
 // IEC gives all inputs of such a function one type, the type every input converts to
@@ -22,9 +22,9 @@
 #include <type_traits>
 #include <utility>
 
-#include <iecoop/detail/value_operators.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/types/date_time.hpp>
+#include <iecoop/types/detail/value_operators.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/enumeration.hpp>
 #include <iecoop/types/string.hpp>
