@@ -294,25 +294,70 @@ TEST_SUITE("file_storage") {
     CHECK(file.temporary_files().empty());
   }
 
-  TEST_CASE("a leftover temporary file is neither used nor removed (it may be another process's)") {
+  TEST_CASE("a leftover temporary file is never used; the next start removes those of processes that ended") {
     const temp_file file("atomic");
     file_storage storage(file.c_str());
     CHECK(storage.save(bytes("old image")));
-    // What a save killed while writing leaves (another process, which had our pid), at the
-    // name the next save tries first.
-    const std::string leftover = file.temporary(0);
-    write_file(leftover, "half a new ima");
+    CHECK(storage.removed_temporaries() == 0);
+    // What a save killed while writing leaves: the temporary file of a process that has ended ...
+    const pid_t ended = ::fork();
+    REQUIRE(ended >= 0);
+    if (ended == 0) ::_exit(0);
+    int status = -1;
+    REQUIRE(::waitpid(ended, &status, 0) == ended);
+    const std::string dead = file.str() + "." + std::to_string(ended) + ".7.tmp";
+    write_file(dead, "half a new ima");
+    // ... one of a process still running (the test's parent), which may be saving ...
+    const std::string running = file.str() + "." + std::to_string(::getppid()) + ".3.tmp";
+    write_file(running, "half a new ima");
+    // ... one of this process, at the name its next save tries first (it skips it) ...
+    const std::string own = file.temporary(0);
+    write_file(own, "half a new ima");
+    // ... the fixed name of the <cstdio> fallback, and names that only look like a save's.
     write_file(file.tmp(), "half a new ima");
+    const std::vector<std::string> lookalikes = {
+        file.str() + "." + std::to_string(ended) + ".tmp",                                // no n
+        file.str() + ".x" + std::to_string(ended) + ".1.tmp",                             // no pid
+        file.str() + "." + std::to_string(ended) + ".1.tmp.saved",                        // another suffix
+        (file.directory() / ("other.bin." + std::to_string(ended) + ".1.tmp")).string(),  // another file's
+    };
+    for (const std::string& name : lookalikes) write_file(name, "not ours");
+
     file_storage next_run(file.c_str());
+    CHECK(next_run.removed_temporaries() == 1);
+    CHECK_FALSE(std::filesystem::exists(dead));
+    CHECK(read_file(running) == "half a new ima");
+    CHECK(read_file(own) == "half a new ima");
+    CHECK(read_file(file.tmp()) == "half a new ima");
+    for (const std::string& name : lookalikes) CHECK(read_file(name) == "not ours");
     std::array<std::byte, 64> buffer{};
     CHECK(next_run.load(buffer) == sizeof("old image"));
     CHECK(static_cast<char>(buffer[0]) == 'o');
     CHECK(next_run.save(bytes("new image")));
     CHECK(next_run.load(buffer) == sizeof("new image"));
     CHECK(static_cast<char>(buffer[0]) == 'n');
-    CHECK(read_file(leftover) == "half a new ima");
-    CHECK(read_file(file.tmp()) == "half a new ima");
-    CHECK(file.temporary_files().size() == 2);
+    CHECK(read_file(own) == "half a new ima");
+  }
+
+  TEST_CASE("an empty <path> holds no image: the save after it keeps <path>.previous") {
+    const temp_file file("empty_current");
+    file_storage storage(file.c_str());
+    CHECK(storage.save(bytes("first")));
+    CHECK(storage.save(bytes("second")));
+    write_file(file.str(), "");  // its data lost, or truncated by a tool
+    std::array<std::byte, 64> buffer{};
+    CHECK(storage.load(buffer) == 0);
+    REQUIRE(storage.load_previous(buffer) == sizeof("first"));
+    CHECK(storage.save(bytes("third")));
+    CHECK(storage.load(buffer) == sizeof("third"));
+    CHECK(static_cast<char>(buffer[0]) == 't');
+    // The last image there was is still reachable: the empty file did not take its place.
+    REQUIRE(storage.load_previous(buffer) == sizeof("first"));
+    CHECK(static_cast<char>(buffer[0]) == 'f');
+    // From then on, as ever: the save after it makes "third" the previous image.
+    CHECK(storage.save(bytes("fourth")));
+    REQUIRE(storage.load_previous(buffer) == sizeof("third"));
+    CHECK(file.temporary_files().empty());
   }
 
   TEST_CASE("a save into a directory that does not exist fails and leaves nothing") {
@@ -466,6 +511,13 @@ TEST_SUITE("file_storage") {
     CHECK(rounds >= 20);
     CHECK(changes == rounds);  // each child saved (at least once)
     CHECK(storage.save(make_image(0, 1)));
+    // The killed saves left temporary files (those killed while writing); the next start, a
+    // new file_storage for the path, removes them all: their processes have ended.
+    const std::size_t left = file.temporary_files().size();
+    CAPTURE(left);
+    const file_storage next_start(file.c_str());
+    CHECK(next_start.removed_temporaries() == left);
+    CHECK(file.temporary_files().empty());
   }
 
   TEST_CASE("two processes saving to one path at once: each image whole, the last save wins") {

@@ -368,6 +368,11 @@ TEST_SUITE("application: what start() finds in the storage") {
       damaged_size -= 3;
     }
     SUBCASE("another version") { storage.bytes()[4] = std::byte{7}; }
+    SUBCASE("junk after the image") {
+      storage.current[storage.current_size] = std::byte{'j'};
+      storage.current_size += 1;
+      damaged_size += 1;
+    }
     SUBCASE("not an image") { std::fill(storage.current.begin(), storage.current.end(), std::byte{'x'}); }
     damaged = storage.current;
     auto plc = make_line();
@@ -467,16 +472,44 @@ TEST_SUITE("application: what start() finds in the storage") {
     CHECK(storage.set_asides == 1);
   }
 
-  TEST_CASE("an image larger than the retain memory: too_large, not silently dropped") {
+  TEST_CASE(
+      "an image larger than the retain memory: the previous one if intact, else too_large, never dropped silently") {
     two_slot_storage storage;
     run_twice(storage);
     storage.current_size = 400;  // larger than the application's 128 bytes
+    bool with_previous = true;
+    SUBCASE("with an intact previous image") {}
+    SUBCASE("without a previous image") {
+      storage.previous_size = 0;
+      with_previous = false;
+    }
     application plc{task<PRG_Line>{"Main", cyclic{"T#1ms"_iec}, 1}, retain_capacity<128>{}};
     plc.use_storage(storage);
     plc.start();
-    CHECK(plc.retain_status().retain == retain_load::too_large);
-    CHECK(plc.retain_status().persistent == retain_load::too_large);
-    CHECK(storage.set_asides == 1);
+    const retain_load expect = with_previous ? retain_load::restored_previous : retain_load::too_large;
+    CHECK(plc.retain_status().retain == expect);
+    CHECK(plc.retain_status().persistent == expect);
+    CHECK(plc.retain_status().OldBootData == BOOL(with_previous));
+    CHECK(PRG_Line::instance().nTotal == (with_previous ? 103U : 100U));
+    CHECK(storage.set_asides == 1);  // the large image is kept aside either way
+    CHECK(storage.aside_size == 400);
+  }
+
+  TEST_CASE("no current image beside an intact previous one: restored_previous, nothing set aside") {
+    two_slot_storage storage;
+    run_twice(storage);
+    storage.current_size = 0;  // load() finds nothing
+    auto plc = make_line();
+    plc.use_storage(storage);
+    events.clear();
+    REQUIRE(plc.start());
+    CHECK(events == "init:F:restored_previous ");
+    CHECK(plc.retain_status().retain == retain_load::restored_previous);
+    CHECK(plc.retain_status().persistent == retain_load::restored_previous);
+    CHECK(plc.retain_status().OldBootData);
+    CHECK_FALSE(plc.retain_status().set_aside);
+    CHECK(storage.set_asides == 0);
+    CHECK(PRG_Line::instance().nTotal == 103U);
   }
 
   TEST_CASE("a warm and a cold reset report what they kept") {
@@ -524,7 +557,7 @@ struct retain_file {
 
 }  // namespace
 
-TEST_CASE("application: a damaged retain file, each kind of damage, with file_storage") {
+TEST_CASE("application: a damaged, empty, missing or too large retain file, with file_storage") {
   retain_file file;
   {
     file_storage storage(file.path.c_str());
@@ -538,45 +571,91 @@ TEST_CASE("application: a damaged retain file, each kind of damage, with file_st
     plc.stop();  // the current one: nTotal 106
   }
   const std::vector<char> good = read_file(file.path);
+  const std::vector<char> previous = read_file(file.path + ".previous");
   REQUIRE(good.size() > 40);
+  REQUIRE(previous.size() == good.size());
   std::vector<char> damaged = good;
-  std::string expect = "restored_previous";
+  bool missing = false;
+  bool set_aside = true;  // the current file is moved to .rejected
   SUBCASE("one flipped bit") { damaged[damaged.size() / 2] ^= 0x04; }
   SUBCASE("truncated") { damaged.resize(damaged.size() - 1); }
   SUBCASE("cut to its header") { damaged.resize(16); }
   SUBCASE("another format version") { damaged[4] = 2; }
-  SUBCASE("empty") {
+  SUBCASE("junk after the image") { damaged.insert(damaged.end(), {'j', 'u', 'n', 'k'}); }
+  SUBCASE("larger than the retain memory") { damaged.resize(4096, '\0'); }
+  SUBCASE("empty (its data lost, or truncated: `: > retain.bin`)") {
     damaged.clear();
-    expect = "initial";  // an empty file is no image: as if nothing was stored
+    set_aside = false;  // nothing in it to keep: .rejected is not overwritten with nothing
   }
-  SUBCASE("larger than the retain memory") {
-    damaged.resize(4096, '\0');
-    expect = "too_large";
+  SUBCASE("missing") {
+    missing = true;
+    set_aside = false;
   }
+  if (missing) {
+    std::filesystem::remove(file.path);
+  } else {
+    write_file(file.path, damaged);
+  }
+  file_storage storage(file.path.c_str());
+  auto plc = make_line();
+  plc.use_storage(storage);
+  events.clear();
+  REQUIRE(plc.start());
+  // Every case: the previous image, intact, is restored and said to be (TwinCAT's OldBootData).
+  CHECK(plc.retain_status().retain == retain_load::restored_previous);
+  CHECK(plc.retain_status().persistent == retain_load::restored_previous);
+  CHECK(events == "init:F:restored_previous ");
+  CHECK(PRG_Line::instance().nTotal == 103U);
+  CHECK(plc.retain_status().OldBootData);
+  CHECK(plc.retain_status().set_aside == set_aside);
+  plc.run_for(ms(3));  // nTotal 106 again, from the restored 103
+  if (set_aside) {
+    // Set aside, byte for byte, and kept over the next save.
+    CHECK(read_file(file.path + ".rejected") == damaged);
+    plc.stop();
+    CHECK(read_file(file.path + ".rejected") == damaged);
+  } else {
+    CHECK_FALSE(std::filesystem::exists(file.path + ".rejected"));
+    plc.stop();
+  }
+  // The generation restored is not lost by the save after it: the new image is at <path>, and
+  // <path>.previous still holds the image restored (an empty or missing file never became it).
+  CHECK(read_file(file.path + ".previous") == previous);
+  file_storage again(file.path.c_str());
+  auto next = make_line();
+  next.use_storage(again);
+  REQUIRE(next.start());
+  CHECK(next.retain_status().retain == retain_load::restored);
+  CHECK(PRG_Line::instance().nTotal == 106U);
+  next.stop();
+}
+
+TEST_CASE("application: only a storage with neither a current nor a previous image is a first start") {
+  retain_file file;
+  {
+    file_storage storage(file.path.c_str());
+    auto plc = make_line();
+    plc.use_storage(storage);
+    plc.start();
+    plc.run_for(ms(3));
+    plc.stop();  // one image, no previous
+  }
+  std::vector<char> damaged = read_file(file.path);
+  SUBCASE("empty, no previous") { damaged.clear(); }
+  SUBCASE("damaged, no previous") { damaged[damaged.size() / 2] ^= 0x04; }
+  const bool empty = damaged.empty();
   write_file(file.path, damaged);
   file_storage storage(file.path.c_str());
   auto plc = make_line();
   plc.use_storage(storage);
   events.clear();
   REQUIRE(plc.start());
-  CAPTURE(expect);
+  const std::string expect = empty ? "initial" : "damaged";
   CHECK(std::string(to_string(plc.retain_status().retain)) == expect);
-  CHECK(std::string(to_string(plc.retain_status().persistent)) == expect);
-  if (expect == "restored_previous") {
-    CHECK(events == "init:F:restored_previous ");
-    CHECK(PRG_Line::instance().nTotal == 103U);
-    CHECK(plc.retain_status().OldBootData);
-  } else {
-    CHECK(events == "init:T:" + expect + " ");
-    CHECK(PRG_Line::instance().nTotal == 100U);
-  }
-  if (expect != "initial") {
-    // Set aside, byte for byte, and kept over the next save.
-    CHECK(plc.retain_status().set_aside);
-    CHECK(read_file(file.path + ".rejected") == damaged);
-    plc.stop();
-    CHECK(read_file(file.path + ".rejected") == damaged);
-  }
+  CHECK(events == "init:T:" + expect + " ");
+  CHECK(PRG_Line::instance().nTotal == 100U);
+  CHECK(plc.retain_status().set_aside == !empty);
+  plc.stop();
 }
 
 TEST_SUITE("application: the retain memory is checked at start") {

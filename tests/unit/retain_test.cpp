@@ -638,8 +638,13 @@ TEST_SUITE("retain") {
     detail::retained_put(lying.data() + 12, detail::retained_checksum(std::span(lying).subspan(16, size - 16)), 4);
     CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(lying).first(size)) == retain_kinds::none);
 
-    // Trailing bytes after a complete image are ignored.
-    CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(good).first(size + 8)) == retain_kinds::both);
+    // Bytes after a complete image: not what a save wrote, damaged like bytes missing
+    // (docs/retain.md, "An image is exactly what a save wrote").
+    CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(good).first(size + 8)) == retain_kinds::none);
+    CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(good).first(size + 1)) == retain_kinds::none);
+    check_retain_initial(machine);
+    // The image alone restores.
+    CHECK(detail::restore_retained(objects, retain_kinds::both, std::span(good).first(size)) == retain_kinds::both);
     check_retain_kept(machine);
   }
 

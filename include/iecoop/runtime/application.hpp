@@ -130,8 +130,9 @@ class application {
    * every value one of its type (retain_status() tells what was found) — so that FB_Init gets
    * bInitRetains = FALSE exactly when the RETAIN values are restored, and each remanent
    * variable takes its kept value as it is constructed: FB_Init sees the kept values, as in
-   * CODESYS (docs/retain.md, "Start-up order"). A damaged image is replaced by the storage's
-   * previous one if it has one (load_previous()); a rejected image is moved aside (set_aside())
+   * CODESYS (docs/retain.md, "Start-up order"). A missing, empty, damaged or too large image is
+   * replaced by the storage's previous one if it has an intact one (load_previous(),
+   * retain_load::restored_previous); a rejected image is moved aside (set_aside())
    * so that no save overwrites it. After a reset, start() continues with the existing
    * instances; cyclic and freewheeling tasks are released from now() on. On a running
    * application it does nothing. Returns FALSE in the exception state (reset first), and if the
@@ -523,8 +524,9 @@ class application {
   /// Reads the storage's image into the retain memory and checks it against the variables of
   /// a probe (the instances constructed without FB_Init, then destroyed without FB_Exit):
   /// the image's size, `verdict` for each kind in `wanted`, and in `ordered` the kinds whose
-  /// variables the probe constructed in the image's order. A damaged image gives way to
-  /// the storage's previous one, if it has an intact one; a rejected image is set aside.
+  /// variables the probe constructed in the image's order. A missing, empty, damaged or too
+  /// large image gives way to the storage's previous one, if it has an intact one; a rejected
+  /// image is set aside.
   std::size_t read_storage(retain_kinds wanted, detail::retained_verdict& verdict, iecoop::retain_status& status,
                            retain_kinds& ordered) {
     const auto mark_all = [&](retain_load load) {
@@ -535,23 +537,33 @@ class application {
     std::size_t size = storage_.load(storage_.object, retain_memory_);
     if (size > retain_memory_.size()) size = 0;
     bool previous = false;
-    bool rejected = false;
+    bool rejected = false;  // the current image is set aside
+    // The storage's previous image, where the current one is of no use: its size, or 0 if it
+    // has none or none intact.
+    const auto load_previous = [&]() -> std::size_t {
+      if (storage_.load_previous == nullptr) return 0;
+      const std::size_t older = storage_.load_previous(storage_.object, retain_memory_);
+      if (older == 0 || older > retain_memory_.size() ||
+          !detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), older))) {
+        return 0;
+      }
+      previous = true;
+      return older;
+    };
     if (size == 0) {
-      if (storage_.stored_size == nullptr || storage_.stored_size(storage_.object) <= retain_memory_.size()) return 0;
-      mark_all(retain_load::too_large);  // a valid image may be in it, but not one of this application
-      rejected = true;
+      // No current image: none stored, an empty one (its data lost), or one larger than the
+      // retain memory. The previous image is the last one there is; only a storage with
+      // neither is a first start.
+      if (storage_.stored_size != nullptr && storage_.stored_size(storage_.object) > retain_memory_.size()) {
+        mark_all(retain_load::too_large);  // a valid image may be in it, but not one of this application
+        rejected = true;
+      }
+      size = load_previous();
+      if (size == 0 && !rejected) return 0;
     } else if (!detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), size))) {
       mark_all(retain_load::damaged);
       rejected = true;
-      if (storage_.load_previous != nullptr) {
-        const std::size_t older = storage_.load_previous(storage_.object, retain_memory_);
-        if (older > 0 && older <= retain_memory_.size() &&
-            detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), older))) {
-          size = older;
-          previous = true;
-        }
-      }
-      if (!previous) size = 0;
+      size = load_previous();
     }
     if (size > 0) {
       {
@@ -565,7 +577,10 @@ class application {
           if (!wanted.contains(kind)) continue;
           verdict[kind] = found[kind];
           if (found[kind] == retain_load::restored && previous) verdict[kind] = retain_load::restored_previous;
-          if (found[kind] == retain_load::changed || found[kind] == retain_load::invalid_value) rejected = true;
+          // A current image of other variables is set aside; a previous one stays where it is.
+          if ((found[kind] == retain_load::changed || found[kind] == retain_load::invalid_value) && !previous) {
+            rejected = true;
+          }
         }
       }
     }

@@ -18,11 +18,16 @@
 #if (defined(__unix__) || defined(__APPLE__)) && __has_include(<unistd.h>)
 #include <atomic>
 #include <cerrno>
+#include <cstring>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
+#if defined(__linux__) && __has_include(<dirent.h>)
+#include <dirent.h>  // getdents64: a directory's names without opendir's allocation
+#endif
 #else
 #include <cstdio>
 #endif
@@ -64,7 +69,14 @@ inline std::atomic<unsigned long> file_storage_names_taken{0};
  * file (n counts the names a process took): the last rename wins and each image is whole. A symbolic link at `<path>`,
  * `<path>.previous` or `<path>.rejected` is replaced, never written through. A failed save
  * removes its temporary file; a killed one leaves it behind (`<path>.<pid>.<n>.tmp`, which
- * nothing reads; it may be deleted when no save runs).
+ * nothing reads). A file_storage, when it is made (at a program's start), removes those of its
+ * path whose process no longer runs (Linux; `removed_temporaries()` says how many): a process
+ * that is still running may be saving into its own. The processes that save to one path must
+ * see each other's process ids (one PID namespace).
+ *
+ * An empty `<path>` (a file system that lost the file's data, a tool that truncated it) holds
+ * no image: a save then keeps `<path>.previous` as it is rather than making the empty file the
+ * previous image, so the last image there was stays reachable.
  *
  * load() and load_previous() read `<path>` and `<path>.previous`: the number of bytes, or 0
  * for a missing, empty or unreadable file, one that is not a regular file, or one larger
@@ -102,6 +114,7 @@ class file_storage {
     }
     path_[n] = '\0';
     length_ = n;
+    removed_temporaries_ = remove_stale_temporaries();
   }
 
   /// Replaces the image with `data`, keeping the one it replaces as the previous image; FALSE
@@ -146,6 +159,10 @@ class file_storage {
 
   /// The file's path ("" if the path given was too long).
   [[nodiscard]] const char* path() const noexcept { return path_; }
+
+  /// How many temporary files of saves killed before they ended (`<path>.<pid>.<n>.tmp` of a
+  /// process no longer running) this object removed when it was made.
+  [[nodiscard]] std::size_t removed_temporaries() const noexcept { return removed_temporaries_; }
 
  private:
   static constexpr char previous_suffix[] = ".previous";
@@ -261,6 +278,66 @@ class file_storage {
   /// Syncs the directory; a file system that cannot sync a directory (EINVAL) is no error.
   static bool sync_directory(int fd) noexcept { return sync(fd) || errno == EINVAL; }
 
+  /// The pid in `entry` if it is a temporary name of this file's saves, `<name>.<pid>.<n>.tmp`
+  /// (pid and n decimal); 0 otherwise.
+  [[nodiscard]] ::pid_t temporary_of(const char* entry) const noexcept {
+    const char* own = name();
+    std::size_t i = 0;
+    for (; own[i] != '\0'; ++i) {
+      if (entry[i] != own[i]) return 0;
+    }
+    if (entry[i++] != '.') return 0;
+    unsigned long long pid = 0;
+    std::size_t digits = 0;
+    for (; entry[i] >= '0' && entry[i] <= '9' && digits < 19; ++i, ++digits) {
+      pid = pid * 10 + static_cast<unsigned long long>(entry[i] - '0');
+    }
+    if (digits == 0 || entry[i++] != '.') return 0;
+    digits = 0;
+    for (; entry[i] >= '0' && entry[i] <= '9'; ++i) ++digits;
+    if (digits == 0 || entry[i] != '.' || entry[i + 1] != 't' || entry[i + 2] != 'm' || entry[i + 3] != 'p' ||
+        entry[i + 4] != '\0') {
+      return 0;
+    }
+    const auto as_pid = static_cast<::pid_t>(pid);
+    return as_pid > 0 && static_cast<unsigned long long>(as_pid) == pid ? as_pid : 0;
+  }
+
+  /// Removes the temporary files of this file's saves whose process no longer runs (kill(pid,
+  /// 0) says ESRCH); this process's own are left alone. Reads the directory with getdents64
+  /// into a buffer on the stack (opendir allocates). The number removed.
+  std::size_t remove_stale_temporaries() noexcept {
+#if defined(__linux__) && __has_include(<dirent.h>) && defined(__GLIBC__) && \
+    (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 30))
+    const descriptor directory(open_directory());
+    if (directory.get() < 0) return 0;
+    const ::pid_t self = ::getpid();
+    std::size_t removed = 0;
+    alignas(struct dirent64) char buffer[4096];
+    for (;;) {
+      const ::ssize_t got = ::getdents64(directory.get(), buffer, sizeof buffer);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) break;
+      for (::ssize_t at = 0; at < got;) {
+        struct dirent64 entry {};
+        // The records are packed; copy the fixed part out rather than cast an unaligned address.
+        std::memcpy(&entry, buffer + at, offsetof(struct dirent64, d_name));
+        const char* entry_name = buffer + at + offsetof(struct dirent64, d_name);
+        const ::pid_t pid = temporary_of(entry_name);
+        if (pid != 0 && pid != self && ::kill(pid, 0) != 0 && errno == ESRCH &&
+            ::unlinkat(directory.get(), entry_name, 0) == 0) {
+          ++removed;
+        }
+        if (entry.d_reclen == 0) break;
+        at += entry.d_reclen;
+      }
+    }
+    return removed;
+#else
+    return 0;  // no way to list a directory without allocating here: the files stay
+#endif
+  }
+
   /// Creates and opens a new temporary file, its name in `out`; -1 on failure.
   int create_temporary(int directory, char (&out)[name_capacity]) noexcept {
     for (int attempt = 0; attempt < name_attempts; ++attempt) {
@@ -279,6 +356,12 @@ class file_storage {
   bool keep_previous(int directory) noexcept {
     char previous[name_capacity];
     with_suffix(previous, name_, previous_suffix);
+    // An empty current file holds no image: the previous one stays (the last image there is).
+    struct stat current {};
+    if (::fstatat(directory, name(), &current, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(current.st_mode) &&
+        current.st_size == 0) {
+      return true;
+    }
     char second_name[name_capacity];
     for (int attempt = 0; attempt < name_attempts; ++attempt) {
       // linkat without AT_SYMLINK_FOLLOW links a symbolic link itself, not its target.
@@ -362,6 +445,9 @@ class file_storage {
     return sync_directory(directory.get());
   }
 #else
+  /// Nothing to remove here: the fixed `<path>.tmp` may be another process's save under way.
+  static std::size_t remove_stale_temporaries() noexcept { return 0; }
+
   bool save_file(std::span<const std::byte> data) noexcept {
     char temporary[name_capacity];
     with_suffix(temporary, 0, ".tmp");
@@ -424,6 +510,7 @@ class file_storage {
 
   char path_[max_path + 1]{};
   std::size_t length_ = 0;
+  std::size_t removed_temporaries_ = 0;
   std::size_t name_ = 0;  // where the file's name starts in path_ (after the last '/')
 };
 

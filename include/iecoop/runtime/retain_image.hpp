@@ -211,8 +211,8 @@ inline std::size_t save_retained(std::span<const retained_object> objects, retai
   return position;
 }
 
-/// TRUE if `in` begins with a complete image of a version this iecoop reads, whose
-/// checksum and section structure are intact.
+/// TRUE if `in` is a complete image of a version this iecoop reads, nothing before or after
+/// it, whose checksum and section structure are intact.
 inline bool valid_retained_image(std::span<const std::byte> in) noexcept {
   if (in.size() < retain_image_header_size) return false;
   for (std::size_t i = 0; i < retain_image_magic.size(); ++i) {
@@ -220,7 +220,9 @@ inline bool valid_retained_image(std::span<const std::byte> in) noexcept {
   }
   if (retained_get(in.data() + 4, 2) != retain_image_version) return false;
   const std::size_t total = retained_get(in.data() + 8, 4);
-  if (total < retain_image_header_size || total > in.size()) return false;
+  // Exactly what a save wrote: bytes after the image (junk appended, another file's tail) make
+  // it as damaged as bytes missing (docs/retain.md, "What a start finds").
+  if (total < retain_image_header_size || total != in.size()) return false;
   const std::span<const std::byte> body = in.subspan(retain_image_header_size, total - retain_image_header_size);
   if (retained_get(in.data() + 12, 4) != retained_checksum(body)) return false;
   const std::size_t sections = retained_get(in.data() + 6, 2);

@@ -25,7 +25,9 @@ namespace iecoop {
  * Where a runtime keeps the image between two runs of the program (a controller restart):
  * `save(data)` stores the bytes, replacing what was stored, and returns whether it
  * succeeded; `load(buffer)` copies the stored bytes into `buffer` and returns how many, or 0
- * when nothing is stored, it cannot be read or the buffer is too small. memory_storage and
+ * when nothing is stored, it cannot be read or the buffer is too small. Exactly the bytes
+ * saved: an image followed by more bytes is damaged (a storage on a fixed-size region, FRAM
+ * or a flash sector, keeps the size it saved, or reads it from the image's header). memory_storage and
  * file_storage (<iecoop/runtime/file_storage.hpp>) are two; a firmware writes its own for
  * flash or FRAM.
  */
