@@ -537,9 +537,12 @@ TEST_SUITE("MQTT bridge") {
     }
   }
 
-  TEST_CASE("a retained command, replayed at connect, is rejected") {
+  TEST_CASE("a retained command: written once, when it is published, never when it is replayed") {
+    // MQTT 3.1.1 section 3.3.1.3: a broker delivers a message published with retain to the
+    // clients subscribed at that moment with the retain flag cleared (the bridge cannot tell
+    // it from any other command: written), and again, flagged, at every later subscription
+    // (every connect and reconnect: rejected, so a stale set-point is never written again).
     broker b;
-    publish(b, "replay/IO_PRG/iSetpoint/set", {"77"}, true);
     subscriber sub(b, "replay/#");
     application plc{task<IO_PRG>{"Fast", cyclic{"T#10ms"_iec}, 0}};
     plc.start();
@@ -547,12 +550,38 @@ TEST_SUITE("MQTT bridge") {
     mqtt_bridge<4, 1> mqtt{test_config(b, "replay", "mqtt-test-replay")};
     CHECK(mqtt.command("IO_PRG.iSetpoint", io.iSetpoint));
     mqtt.attach(plc.task("Fast"));
-    REQUIRE(mqtt.start() == nullptr);
-    CHECK(eventually([&] { return mqtt.statistics().commands_rejected == 1; }));
-    CHECK(sub.wait_for("replay/IO_PRG/iSetpoint/set/rejected {\"reason\":\"a retained command is not written"));
-    cycle(plc);
-    CHECK(io.iSetpoint == 0);
-    CHECK(mqtt.statistics().commands_accepted == 0);
+
+    SUBCASE("published retained before the bridge connects: replayed at connect, rejected") {
+      publish(b, "replay/IO_PRG/iSetpoint/set", {"77"}, true);
+      REQUIRE(mqtt.start() == nullptr);
+      CHECK(eventually([&] { return mqtt.statistics().commands_rejected == 1; }));
+      CHECK(sub.wait_for("replay/IO_PRG/iSetpoint/set/rejected {\"reason\":\"a retained command is not written"));
+      cycle(plc);
+      CHECK(io.iSetpoint == 0);
+      CHECK(mqtt.statistics().commands_accepted == 0);
+    }
+
+    SUBCASE("published retained while the bridge is connected: written once, rejected on every reconnect") {
+      REQUIRE(mqtt.start() == nullptr);
+      REQUIRE(sub.wait_for("replay/status online\n"));
+      publish(b, "replay/IO_PRG/iSetpoint/set", {"55"}, true);
+      REQUIRE(eventually([&] { return mqtt.statistics().commands_accepted == 1; }));
+      cycle(plc);
+      CHECK(io.iSetpoint == 55);  // live: written, as any command
+      CHECK(mqtt.statistics().commands_rejected == 0);
+      io.iSetpoint = 0;  // the program moves on
+      const std::uint64_t accepted = mqtt.statistics().commands_accepted;
+      // A reconnect subscribes again; the broker replays the retained message, flagged.
+      mqtt.stop();
+      REQUIRE(mqtt.start() == nullptr);
+      CHECK(eventually([&] { return mqtt.statistics().commands_rejected == 1; }));
+      CHECK(sub.wait_for("replay/IO_PRG/iSetpoint/set/rejected {\"reason\":\"a retained command is not written"));
+      cycle(plc);
+      cycle(plc);
+      CHECK(io.iSetpoint == 0);  // not written again
+      CHECK(mqtt.statistics().commands_accepted == accepted);
+    }
+    publish(b, "replay/IO_PRG/iSetpoint/set", {""}, true);  // clear the retained message
   }
 
   TEST_CASE("a broker that refuses the connection: counted, tried again after the back-off") {

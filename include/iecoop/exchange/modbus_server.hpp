@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -91,11 +92,21 @@ struct modbus_server_config {
   /// CODESYS's "Closing the TCP socket": when the watchdog expires, the connections are closed
   /// too (a client that hangs on a half-open connection connects anew).
   bool watchdog_closes_connections = false;
-  /// How many clients may be connected at once; one more is refused (closed at once).
+  /// How many clients may be connected at once. One more takes the place of the connection
+  /// idle longest, if that one has been idle for client_timeout at least; otherwise it is
+  /// refused (closed at once).
   int max_clients = 8;
-  /// A request must arrive in full within this of its first byte, and a reply must leave
-  /// within it; otherwise the connection is closed (a stalled or slow client).
+  /// A request must arrive in full within this of its first byte; otherwise the connection is
+  /// closed (a stalled or dribbling client). A client that does not read its replies is closed
+  /// as soon as they no longer fit its socket's buffer.
   LTIME client_timeout{500'000'000};
+  /// A connection on which no request arrives for this long is closed (as Beckhoff's Modbus TCP
+  /// bus controllers close a connection unused for about 10 s): connections that send nothing
+  /// hold no place for long. 0: never.
+  LTIME idle_timeout{10'000'000'000};
+  /// A client whose requests this many times in a row are answered with an exception (a
+  /// function or address this server does not serve) is closed; 0: never.
+  std::uint32_t max_exceptions_in_a_row = 16;
 };
 
 /// What a Modbus server did since start(); read any time, from any thread.
@@ -104,7 +115,9 @@ struct modbus_server_statistics {
   std::uint64_t exceptions = 0;         ///< answered with an exception (illegal function, address, value)
   std::uint64_t bad_requests = 0;       ///< broken off (malformed, incomplete in time); the connection was closed
   std::uint64_t connections = 0;        ///< accepted
-  std::uint64_t refused = 0;            ///< refused: max_clients were connected
+  std::uint64_t refused = 0;            ///< refused: max_clients were connected, none idle
+  std::uint64_t closed_idle = 0;        ///< closed after idle_timeout, or to make room for a new client
+  std::uint64_t closed_exceptions = 0;  ///< closed after max_exceptions_in_a_row exceptions
   std::uint64_t watchdog_expiries = 0;  ///< times the watchdog set the holding data to 0
   std::uint32_t clients = 0;            ///< connected now
 };
@@ -166,6 +179,8 @@ class modbus_server {
     s.bad_requests = bad_requests_.load(std::memory_order_relaxed);
     s.connections = connections_.load(std::memory_order_relaxed);
     s.refused = refused_.load(std::memory_order_relaxed);
+    s.closed_idle = closed_idle_.load(std::memory_order_relaxed);
+    s.closed_exceptions = closed_exceptions_.load(std::memory_order_relaxed);
     s.watchdog_expiries = watchdog_expiries_.load(std::memory_order_relaxed);
     s.clients = clients_.load(std::memory_order_relaxed);
     return s;
@@ -296,8 +311,8 @@ class modbus_server {
   }
 
   void close_all() noexcept {
-    for (const int client : client_sockets_) ::close(client);
-    client_sockets_.clear();
+    for (const client& c : clients_list_) ::close(c.socket);
+    clients_list_.clear();
     clients_.store(0);
     if (listen_socket_ >= 0) ::close(listen_socket_);
     listen_socket_ = -1;
@@ -308,7 +323,21 @@ class modbus_server {
     context_.reset();
   }
 
-  // The server thread.
+  // One connection, as the server thread keeps it: the request being read (bytes arrive as they
+  // may; nothing waits for them), its deadline, and what the connection did.
+  struct client {
+    int socket = -1;
+    std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH> frame{};
+    std::size_t have = 0;              // bytes of the request being read
+    std::size_t want = 7;              // the MBAP header, then the whole frame it announces
+    clock::time_point deadline{};      // the request in full by then (from its first byte)
+    clock::time_point last_request{};  // the connection's start, then each request's end
+    std::uint32_t exceptions_in_a_row = 0;
+  };
+
+  // The server thread: one poll over the wake-up pipe, the listening socket and the clients.
+  // Nothing in it waits for a client: a request is read as its bytes come, a reply is sent
+  // without blocking, so no client (slow, idle, dribbling, flooding) delays the others.
   void serve() {
     std::vector<pollfd> polled;
     polled.reserve(static_cast<std::size_t>(config_.max_clients) + 2);
@@ -316,82 +345,140 @@ class modbus_server {
       polled.clear();
       polled.push_back({wake_[0], POLLIN, 0});
       polled.push_back({listen_socket_, POLLIN, 0});
-      for (const int client : client_sockets_) polled.push_back({client, POLLIN, 0});
+      for (const client& c : clients_list_) polled.push_back({c.socket, POLLIN, 0});
       const int ready = ::poll(polled.data(), polled.size(), poll_timeout_ms());
-      const bool closed = check_watchdog();
-      if (ready <= 0 || closed) continue;  // (closed: `polled` names sockets that are gone)
-      if ((polled[0].revents & POLLIN) != 0) break;
-      for (std::size_t i = 2; i < polled.size(); ++i) {
-        if (polled[i].revents != 0) serve_client(polled[i].fd);
+      if (check_watchdog()) continue;  // (the connections closed: `polled` names sockets that are gone)
+      if (ready > 0) {
+        if ((polled[0].revents & POLLIN) != 0) break;
+        // Each ready client once per round, one request each: a flood waits its turn.
+        for (std::size_t i = 2; i < polled.size(); ++i) {
+          if (polled[i].revents != 0) serve_client(polled[i].fd);
+        }
+        if ((polled[1].revents & POLLIN) != 0) accept_client();
       }
-      if ((polled[1].revents & POLLIN) != 0) accept_client();
+      close_overdue();
     }
   }
 
+  // Until the watchdog expires, the earliest request deadline or idle time: poll's timeout.
   [[nodiscard]] int poll_timeout_ms() const noexcept {
-    if (config_.watchdog.count() == 0 || zeroed_) return -1;
-    const auto due = last_valid_ + std::chrono::nanoseconds(config_.watchdog.count());
+    clock::time_point due = clock::time_point::max();
+    if (config_.watchdog.count() != 0 && !zeroed_)
+      due = last_valid_ + std::chrono::nanoseconds(config_.watchdog.count());
+    for (const client& c : clients_list_) due = std::min(due, next_due(c));
+    if (due == clock::time_point::max()) return -1;
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(due - clock::now()).count();
     return static_cast<int>(std::clamp<long long>(left + 1, 0, 1000));
   }
 
+  // When `c` is overdue: its request's deadline, or the end of its idle time.
+  [[nodiscard]] clock::time_point next_due(const client& c) const noexcept {
+    if (c.have > 0) return c.deadline;
+    if (config_.idle_timeout.count() == 0) return clock::time_point::max();
+    return c.last_request + std::chrono::nanoseconds(config_.idle_timeout.count());
+  }
+
+  // Closes the connections whose request did not arrive in full in time, and the idle ones.
+  void close_overdue() noexcept {
+    const auto now = clock::now();
+    for (std::size_t i = clients_list_.size(); i-- > 0;) {
+      const client& c = clients_list_[i];
+      if (now < next_due(c)) continue;
+      (c.have > 0 ? bad_requests_ : closed_idle_).fetch_add(1, std::memory_order_relaxed);
+      drop_client(c.socket);
+    }
+  }
+
   void accept_client() {
-    const int client = ::accept(listen_socket_, nullptr, nullptr);
-    if (client < 0) return;
-    if (client_sockets_.size() >= static_cast<std::size_t>(config_.max_clients)) {
-      ::close(client);
-      refused_.fetch_add(1, std::memory_order_relaxed);
-      return;
+    const int socket = ::accept4(listen_socket_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (socket < 0) return;
+    const auto now = clock::now();
+    if (clients_list_.size() >= static_cast<std::size_t>(config_.max_clients)) {
+      // Room for the new one where a connection has been idle (no request, none under way) for
+      // client_timeout at least: the one idle longest goes.
+      const auto idle =
+          std::min_element(clients_list_.begin(), clients_list_.end(), [](const client& a, const client& b) {
+            return (a.have == 0 ? a.last_request : clock::time_point::max()) <
+                   (b.have == 0 ? b.last_request : clock::time_point::max());
+          });
+      if (idle == clients_list_.end() || idle->have > 0 ||
+          now - idle->last_request < std::chrono::nanoseconds(config_.client_timeout.count())) {
+        ::close(socket);
+        refused_.fetch_add(1, std::memory_order_relaxed);
+        return;
+      }
+      closed_idle_.fetch_add(1, std::memory_order_relaxed);
+      drop_client(idle->socket);
     }
     const int yes = 1;
-    ::setsockopt(client, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
-    // A client that does not read its replies must not block the server: a reply that cannot
-    // leave within the client timeout closes the connection.
-    const std::uint64_t us = config_.client_timeout.count() / 1000u;
-    timeval send_timeout{static_cast<time_t>(us / 1000000u), static_cast<suseconds_t>(us % 1000000u)};
-    ::setsockopt(client, SOL_SOCKET, SO_SNDTIMEO, &send_timeout, sizeof send_timeout);
-    client_sockets_.push_back(client);
+    ::setsockopt(socket, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+    client c;
+    c.socket = socket;
+    c.last_request = now;
+    clients_list_.push_back(c);
     connections_.fetch_add(1, std::memory_order_relaxed);
-    clients_.store(static_cast<std::uint32_t>(client_sockets_.size()), std::memory_order_relaxed);
+    clients_.store(static_cast<std::uint32_t>(clients_list_.size()), std::memory_order_relaxed);
   }
 
-  void drop_client(int client) noexcept {
-    ::close(client);
-    client_sockets_.erase(std::find(client_sockets_.begin(), client_sockets_.end(), client));
-    clients_.store(static_cast<std::uint32_t>(client_sockets_.size()), std::memory_order_relaxed);
+  void drop_client(int socket) noexcept {
+    ::close(socket);
+    clients_list_.erase(
+        std::find_if(clients_list_.begin(), clients_list_.end(), [&](const client& c) { return c.socket == socket; }));
+    clients_.store(static_cast<std::uint32_t>(clients_list_.size()), std::memory_order_relaxed);
   }
 
-  void serve_client(int client) {
-    std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH> query{};
-    std::size_t size = 0;
-    const frame_read read = read_frame(client, query, size);
-    if (read == frame_read::closed) {  // between two requests: the client is done
-      drop_client(client);
+  void serve_client(int socket) {
+    const auto found =
+        std::find_if(clients_list_.begin(), clients_list_.end(), [&](const client& c) { return c.socket == socket; });
+    if (found == clients_list_.end()) return;  // made room for a new client in this round
+    client& c = *found;
+    const frame_read read = read_frame(c);
+    if (read == frame_read::partial) return;  // the rest when it comes, within the deadline
+    if (read == frame_read::closed) {         // between two requests: the client is done
+      drop_client(socket);
       return;
     }
-    if (read == frame_read::broken || !pdu_fits(query.data() + 7, size - 7)) {
-      // No Modbus/TCP frame, one whose length does not fit its function, or one that did not
-      // arrive in full within the client timeout: the stream is out of step, closed.
+    if (read == frame_read::broken || !pdu_fits(c.frame.data() + 7, c.have - 7)) {
+      // No Modbus/TCP frame, or one whose length does not fit its function: the stream is out
+      // of step, closed.
       bad_requests_.fetch_add(1, std::memory_order_relaxed);
-      drop_client(client);
+      drop_client(socket);
       return;
     }
+    const std::size_t size = c.have;
+    c.have = 0;
+    c.want = 7;
+    c.last_request = clock::now();
     if (to_clients_.refresh()) load_outputs(to_clients_.read_slot());
-    const std::uint8_t function = query[7];
-    modbus_set_socket(context_.get(), client);
-    const int sent = modbus_reply(context_.get(), query.data(), static_cast<int>(size), mapping_.get());
+    const std::uint8_t function = c.frame[7];
+    const std::uint8_t exception = exception_for(c.frame.data() + 7, size - 7);
+    bool sent = false;
+    bool excepted = exception != 0;
+    if (excepted) {
+      sent = send_exception(socket, c.frame, exception);
+    } else {
+      modbus_set_socket(context_.get(), socket);
+      const int length = modbus_reply(context_.get(), c.frame.data(), static_cast<int>(size), mapping_.get());
+      sent = length >= 0;
+      // An exception response is the MBAP header, the function code | 0x80 and the exception
+      // code; every other response to a request libmodbus serves is longer.
+      excepted = length == 9;
+    }
     requests_.fetch_add(1, std::memory_order_relaxed);
-    if (sent < 0) {  // the reply could not leave (the client does not read, or is gone)
+    if (!sent) {  // the reply could not leave: the client does not read its replies, or is gone
       bad_requests_.fetch_add(1, std::memory_order_relaxed);
-      drop_client(client);
+      drop_client(socket);
       return;
     }
-    // An exception response is the MBAP header, the function code | 0x80 and the exception
-    // code; every other response to a request libmodbus serves is longer.
-    if (sent == 9) {
+    if (excepted) {
       exceptions_.fetch_add(1, std::memory_order_relaxed);
+      if (config_.max_exceptions_in_a_row != 0 && ++c.exceptions_in_a_row >= config_.max_exceptions_in_a_row) {
+        closed_exceptions_.fetch_add(1, std::memory_order_relaxed);
+        drop_client(socket);
+      }
       return;
     }
+    c.exceptions_in_a_row = 0;
     last_valid_ = clock::now();
     zeroed_ = false;  // the watchdog watches again
     if (writes(function)) {
@@ -400,35 +487,110 @@ class modbus_server {
     }
   }
 
-  enum class frame_read : std::uint8_t { complete, closed, broken };
+  enum class frame_read : std::uint8_t { complete, partial, closed, broken };
 
-  // One request: the 7 bytes of the MBAP header (transaction, protocol 0, length, unit) and the
-  // PDU its length announces, all within client_timeout of the first byte (a deadline, not a
-  // gap between bytes: a client that dribbles its request holds the server no longer).
-  frame_read read_frame(int client, std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH>& frame,
-                        std::size_t& size) noexcept {
-    const auto deadline = clock::now() + std::chrono::nanoseconds(config_.client_timeout.count());
-    std::size_t have = 0;
-    std::size_t want = 7;
-    while (have < want) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - clock::now()).count();
-      pollfd p{client, POLLIN, 0};
-      if (::poll(&p, 1, static_cast<int>(std::max<long long>(left, 0))) <= 0) return frame_read::broken;
-      const ssize_t n = ::recv(client, frame.data() + have, want - have, 0);
-      if (n <= 0) {
-        if (n < 0 && errno == EINTR) continue;
-        return have == 0 ? frame_read::closed : frame_read::broken;
-      }
-      have += static_cast<std::size_t>(n);
-      if (have == 7 && want == 7) {
-        const unsigned protocol = (static_cast<unsigned>(frame[2]) << 8) | frame[3];
-        const unsigned length = (static_cast<unsigned>(frame[4]) << 8) | frame[5];  // unit identifier + PDU
+  // Reads what has arrived of `c`'s request, without waiting: the 7 bytes of the MBAP header
+  // (transaction, protocol 0, length, unit), then the PDU its length announces. Never more than
+  // the request: a request pipelined behind it stays in the socket for the next round. Its
+  // deadline runs from its first byte (a deadline, not a gap between bytes: a client that
+  // dribbles its request is closed at it; close_overdue()).
+  frame_read read_frame(client& c) noexcept {
+    while (c.have < c.want) {
+      const ssize_t n = ::recv(c.socket, c.frame.data() + c.have, c.want - c.have, MSG_DONTWAIT);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return frame_read::partial;
+      if (n <= 0) return c.have == 0 ? frame_read::closed : frame_read::broken;
+      if (c.have == 0) c.deadline = clock::now() + std::chrono::nanoseconds(config_.client_timeout.count());
+      c.have += static_cast<std::size_t>(n);
+      if (c.have == 7 && c.want == 7) {
+        const unsigned protocol = (static_cast<unsigned>(c.frame[2]) << 8) | c.frame[3];
+        const unsigned length = (static_cast<unsigned>(c.frame[4]) << 8) | c.frame[5];  // unit identifier + PDU
         if (protocol != 0 || length < 2 || length > MODBUS_MAX_PDU_LENGTH + 1u) return frame_read::broken;
-        want = 6 + length;
+        c.want = 6 + length;
       }
     }
-    size = want;
     return frame_read::complete;
+  }
+
+  // The exception a request is answered with (1: illegal function, 2: illegal data address,
+  // 3: illegal data value), 0 where libmodbus serves it with data. Answered here, before
+  // libmodbus sees the request: libmodbus answers an unserved function, and a quantity out
+  // of range, by sleeping its response timeout and flushing the socket, which would stall
+  // every client for half a second and drop the requests pipelined behind. The checks are
+  // libmodbus's own (modbus_reply), in its order.
+  [[nodiscard]] std::uint8_t exception_for(const std::uint8_t* pdu, std::size_t n) const noexcept {
+    const modbus_mapping_t& m = *mapping_;
+    const auto word = [&](std::size_t at) -> unsigned {
+      return at + 1 < n ? (static_cast<unsigned>(pdu[at]) << 8) | pdu[at + 1] : 0U;
+    };
+    const auto outside = [](unsigned address, unsigned count, int start, int size) {
+      const long first = static_cast<long>(address) - start;
+      return first < 0 || first + static_cast<long>(count) > size;
+    };
+    constexpr std::uint8_t illegal_function = 1, illegal_address = 2, illegal_value = 3;
+    switch (pdu[0]) {
+      case 0x01:
+      case 0x02: {
+        const unsigned count = word(3);
+        if (count < 1 || count > MODBUS_MAX_READ_BITS) return illegal_value;
+        const bool coils = pdu[0] == 0x01;
+        return outside(word(1), count, coils ? m.start_bits : m.start_input_bits, coils ? m.nb_bits : m.nb_input_bits)
+                   ? illegal_address
+                   : 0;
+      }
+      case 0x03:
+      case 0x04: {
+        const unsigned count = word(3);
+        if (count < 1 || count > MODBUS_MAX_READ_REGISTERS) return illegal_value;
+        const bool holding = pdu[0] == 0x03;
+        return outside(word(1), count, holding ? m.start_registers : m.start_input_registers,
+                       holding ? m.nb_registers : m.nb_input_registers)
+                   ? illegal_address
+                   : 0;
+      }
+      case 0x05:
+        if (outside(word(1), 1, m.start_bits, m.nb_bits)) return illegal_address;
+        return word(3) == 0xFF00 || word(3) == 0x0000 ? 0 : illegal_value;
+      case 0x06: return outside(word(1), 1, m.start_registers, m.nb_registers) ? illegal_address : 0;
+      case 0x0F: {
+        const unsigned count = word(3);
+        if (count < 1 || count > MODBUS_MAX_WRITE_BITS || n < 6 || pdu[5] * 8u < count) return illegal_value;
+        return outside(word(1), count, m.start_bits, m.nb_bits) ? illegal_address : 0;
+      }
+      case 0x10: {
+        const unsigned count = word(3);
+        if (count < 1 || count > MODBUS_MAX_WRITE_REGISTERS || n < 6 || pdu[5] != count * 2) return illegal_value;
+        return outside(word(1), count, m.start_registers, m.nb_registers) ? illegal_address : 0;
+      }
+      case 0x11: return 0;  // report server id
+      case 0x16: return outside(word(1), 1, m.start_registers, m.nb_registers) ? illegal_address : 0;
+      case 0x17: {
+        const unsigned to_read = word(3);
+        const unsigned to_write = word(7);
+        if (to_write < 1 || to_write > MODBUS_MAX_WR_WRITE_REGISTERS || to_read < 1 ||
+            to_read > MODBUS_MAX_WR_READ_REGISTERS || n < 10 || pdu[9] != to_write * 2) {
+          return illegal_value;
+        }
+        return outside(word(1), to_read, m.start_registers, m.nb_registers) ||
+                       outside(word(5), to_write, m.start_registers, m.nb_registers)
+                   ? illegal_address
+                   : 0;
+      }
+      default: return illegal_function;
+    }
+  }
+
+  // An exception response, sent without waiting: the request's transaction and unit, the
+  // function code | 0x80, the exception code. FALSE if it could not leave at once.
+  static bool send_exception(int socket, const std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH>& request,
+                             std::uint8_t exception) noexcept {
+    const std::uint8_t response[9] = {
+        request[0], request[1], 0, 0, 0, 3, request[6], static_cast<std::uint8_t>(request[7] | 0x80U), exception};
+    for (;;) {
+      const ssize_t n = ::send(socket, response, sizeof response, MSG_NOSIGNAL | MSG_DONTWAIT);
+      if (n < 0 && errno == EINTR) continue;
+      return n == static_cast<ssize_t>(sizeof response);
+    }
   }
 
   // The PDU's length fits its function (as libmodbus reads a request of that function); a
@@ -513,9 +675,9 @@ class modbus_server {
     std::fill_n(m.tab_registers, m.nb_registers, std::uint16_t{0});
     std::fill_n(m.tab_bits, m.nb_bits, std::uint8_t{0});
     publish_inputs();
-    if (!config_.watchdog_closes_connections || client_sockets_.empty()) return false;
-    for (const int client : client_sockets_) ::close(client);
-    client_sockets_.clear();
+    if (!config_.watchdog_closes_connections || clients_list_.empty()) return false;
+    for (const client& c : clients_list_) ::close(c.socket);
+    clients_list_.clear();
     clients_.store(0, std::memory_order_relaxed);
     return true;
   }
@@ -532,7 +694,7 @@ class modbus_server {
   detail::modbus_mapping mapping_;
   int listen_socket_ = -1;
   int wake_[2] = {-1, -1};
-  std::vector<int> client_sockets_;
+  std::vector<client> clients_list_;
   clock::time_point last_valid_{};
   bool zeroed_ = false;
   std::uint16_t port_ = 0;
@@ -541,7 +703,7 @@ class modbus_server {
   std::thread thread_;
   std::atomic<bool> stop_requested_{false};
   std::atomic<std::uint64_t> requests_{0}, exceptions_{0}, bad_requests_{0}, connections_{0}, refused_{0},
-      watchdog_expiries_{0};
+      closed_idle_{0}, closed_exceptions_{0}, watchdog_expiries_{0};
   std::atomic<std::uint32_t> clients_{0};
 };
 

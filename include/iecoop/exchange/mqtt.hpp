@@ -26,8 +26,9 @@
 // A command's payload is a bare JSON scalar or IEC literal (`true`, `FALSE`, `42`, `16#FF`,
 // `-3.5`, `T#2s`), a JSON string holding one (`"T#2s"`, `"Run"`), or `{"value": ...}` with
 // either; it is parsed as ST parses the variable's type (its range too, and the command's
-// min/max). A command that is malformed, out of range, names no command or comes retained is
-// not written: it is counted, and `<topic>/rejected` (not retained) says why. Accepted commands
+// min/max). A command that is malformed, out of range, names no command or is a retained message
+// replayed at a subscription is not written: it is counted, and `<topic>/rejected` (not retained,
+// always valid JSON) says why. Accepted commands
 // queue (command_queue of them; one more is dropped, counted) and are written in order at the
 // start of the attached task's next cycles, after the inputs were latched and before the
 // programs run; a second command for a variable waits for the next cycle, so that the program
@@ -660,15 +661,8 @@ class mqtt_bridge : public trace_channels<MaxChannels>, private cycle_observer {
   }
 
   void publish_rejection(const char* topic, std::string_view payload, const char* reason, std::string_view type_name) {
-    std::string text = "{\"reason\":";
-    detail::mqtt_append_json_string(text, reason);
-    if (!type_name.empty()) {
-      text += ",\"type\":";
-      detail::mqtt_append_json_string(text, type_name);
-    }
-    text += ",\"payload\":";
-    detail::mqtt_append_json_string(text, payload.substr(0, 64));
-    text += '}';
+    std::string text;
+    detail::mqtt_rejection_message(text, reason, type_name, payload);
     publish(std::string(topic) + "/rejected", text, false);
   }
 
@@ -694,7 +688,9 @@ class mqtt_bridge : public trace_channels<MaxChannels>, private cycle_observer {
     if (index == command_count_) return reject(message.topic, payload, "no command of this name");
     const command_slot& slot = commands_[index];
     if (message.retain) {
-      // Sent again at every connect: a command is an event, not a state.
+      // A retained message replayed at a subscription (every connect): a command is an event,
+      // not a state. Its first, live delivery has the flag cleared (MQTT 3.1.1, 3.3.1.3) and
+      // was written as any command.
       return reject(message.topic, payload, "a retained command is not written; publish commands without retain",
                     slot.type_name);
     }

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -21,22 +20,79 @@
 
 namespace iecoop::detail {
 
-/// Appends `text` as a JSON string.
-inline void mqtt_append_json_string(std::string& out, std::string_view text) {
+/// The length of the well-formed UTF-8 sequence (RFC 3629: no overlong form, no surrogate,
+/// nothing above U+10FFFF) that starts `text` at `i`, 0 if none starts there.
+inline std::size_t utf8_sequence(std::string_view text, std::size_t i) noexcept {
+  if (i >= text.size()) return 0;
+  // A byte past the end reads as 0, which continues no sequence.
+  const auto byte = [&](std::size_t k) -> unsigned {
+    return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0U;
+  };
+  const auto continuation = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xBF) {
+    return byte(k) >= lo && byte(k) <= hi;
+  };
+  const unsigned b0 = byte(0);
+  if (b0 < 0x80) return 1;
+  if (b0 >= 0xC2 && b0 <= 0xDF) return continuation(1) ? 2 : 0;
+  if (b0 == 0xE0) return continuation(1, 0xA0) && continuation(2) ? 3 : 0;
+  if ((b0 >= 0xE1 && b0 <= 0xEC) || b0 == 0xEE || b0 == 0xEF) return continuation(1) && continuation(2) ? 3 : 0;
+  if (b0 == 0xED) return continuation(1, 0x80, 0x9F) && continuation(2) ? 3 : 0;
+  if (b0 == 0xF0) return continuation(1, 0x90) && continuation(2) && continuation(3) ? 4 : 0;
+  if (b0 >= 0xF1 && b0 <= 0xF3) return continuation(1) && continuation(2) && continuation(3) ? 4 : 0;
+  if (b0 == 0xF4) return continuation(1, 0x80, 0x8F) && continuation(2) && continuation(3) ? 4 : 0;
+  return 0;
+}
+
+/// Appends at most the first `max_bytes` bytes of `text` as a JSON string that is always
+/// valid: `"` and `\` escaped, control characters as \u00XX, well-formed UTF-8 copied, and each
+/// byte that begins no well-formed sequence (Latin-1 text, a cut sequence, binary) as \ufffd,
+/// the replacement character. The cut falls between characters, never inside one.
+inline void mqtt_append_json_string(std::string& out, std::string_view text,
+                                    std::size_t max_bytes = static_cast<std::size_t>(-1)) {
   out += '"';
-  for (const char c : text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t length = utf8_sequence(text, i);
+    if (i + (length == 0 ? 1 : length) > max_bytes) break;
+    if (length == 0) {
+      out += "\\ufffd";
+      ++i;
+      continue;
+    }
+    const char c = text[i];
     if (c == '"' || c == '\\') {
       out += '\\';
       out += c;
     } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escape[8];
-      std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += escape;
+      static constexpr char hex[] = "0123456789abcdef";
+      out += "\\u00";
+      out += hex[static_cast<unsigned char>(c) >> 4];
+      out += hex[static_cast<unsigned char>(c) & 0xF];
     } else {
-      out += c;
+      out.append(text.substr(i, length));
     }
+    i += length;
   }
   out += '"';
+}
+
+/// How many bytes of a rejected command's payload its `/set/rejected` message repeats.
+inline constexpr std::size_t mqtt_rejected_payload_bytes = 64;
+
+/// The message of a rejected command: {"reason": ..., "type": ... (if known), "payload": the
+/// payload's first mqtt_rejected_payload_bytes bytes, cut between characters}, valid JSON
+/// whatever the payload's bytes.
+inline void mqtt_rejection_message(std::string& out, std::string_view reason, std::string_view type_name,
+                                   std::string_view payload) {
+  out.assign("{\"reason\":");
+  mqtt_append_json_string(out, reason);
+  if (!type_name.empty()) {
+    out += ",\"type\":";
+    mqtt_append_json_string(out, type_name);
+  }
+  out += ",\"payload\":";
+  mqtt_append_json_string(out, payload, mqtt_rejected_payload_bytes);
+  out += '}';
 }
 
 /// IEC text as a string.
