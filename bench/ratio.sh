@@ -11,7 +11,8 @@
 # (bench/callgrind.sh). Prints a Markdown table: the median over the processes of each
 # process's median ratio, the range of those medians, the median of the processes' 10th and
 # 90th percentiles of the repetitions' ratios, and the instruction ratios (also against the
-# hand-written variant that does not store the blocks' inputs, workload_minimal.cpp).
+# hand-written variant that does not store the blocks' inputs, workload_minimal.cpp). The
+# table's first line names the CPU (lscpu's model name), the date and the commit.
 # Installs what it needs (g++, clang-14, clang-16, Google Benchmark, valgrind) first.
 set -eu
 cd "$(dirname "$0")/.."
@@ -64,6 +65,16 @@ median() {
   awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 
+# The CPU the figures hold for (docs/performance.md keeps a history per CPU: a ratio must hold
+# on each machine, and machines differ).
+# A virtual machine may name only the brand ("AMD EPYC"): the family and model tell the
+# generation (family 23: Zen 1/2, 25: Zen 3/4, 26: Zen 5).
+cpu=$(LC_ALL=C lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -n 1)
+family=$(LC_ALL=C lscpu 2>/dev/null | sed -n 's/^CPU family: *//p' | head -n 1)
+model=$(LC_ALL=C lscpu 2>/dev/null | sed -n 's/^Model: *//p' | head -n 1)
+echo "CPU: ${cpu:-unknown} (family ${family:-?}, model ${model:-?}), $(nproc) cores;" \
+  "$(date -u +%Y-%m-%d); $(git rev-parse --short HEAD 2>/dev/null || echo 'no git')"
+echo
 echo "| compiler | time, iecoop / twin: median of $processes processes (their range) | 10th–90th percentile of the repetitions | ns per scan, iecoop / twin | instructions per scan, iecoop / twin | instructions, iecoop / twin | instructions, iecoop / twin without stored inputs |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
 for compiler in "$@"; do
