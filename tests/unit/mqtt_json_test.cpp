@@ -3,6 +3,7 @@
 // well-formed UTF-8 sequence as U+FFFD (docs/exchange.md, "Commands"). Checked here with
 // exact expectations and with a strict checker over random payloads; the test
 // exchange.mqtt_rejections_python hands the same messages to Python's json module.
+#include "flood_payload.hpp"
 #include "iecoop_test.hpp"
 #include "json_check.hpp"
 
@@ -75,21 +76,9 @@ TEST_SUITE("MQTT bridge: JSON") {
     const std::uint64_t seed = std::random_device()();
     CAPTURE(seed);
     std::mt19937_64 random(seed);
-    // Bytes as a flood sends them: any byte, UTF-8 pieces, JSON's own characters.
-    const std::string_view pieces[] = {
-        "\xC3", "\xA4", "\xE2\x82\xAC", "\xF0\x9F\x98", "\x80", "\xFF",  "\"",          "\\", "\\u",
-        "{",    "}",    "\x01",         "\n",           "T#2s", "16#FF", "\xED\xA0\x80"};
     std::string message;
     for (int n = 0; n < 20'000; ++n) {
-      std::string payload;
-      const std::size_t length = random() % 120;
-      while (payload.size() < length) {
-        if (random() % 2 == 0) {
-          payload += static_cast<char>(random() % 256);
-        } else {
-          payload += pieces[random() % std::size(pieces)];
-        }
-      }
+      const std::string payload = iecoop_test::flood_payload(random);
       mqtt_rejection_message(message, "a reason with \"quotes\"", "STRING(80)", payload);
       iecoop_test::json_checker checker;
       CAPTURE(payload);
