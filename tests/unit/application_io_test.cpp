@@ -50,6 +50,31 @@ struct BIT1_PRG : program<BIT1_PRG> {
 
 LTIME ms(std::uint64_t n) { return LTIME::from_ticks(n * 1000000U); }
 
+// An image of 11 output bytes (one word and three bytes: the staging compares both ways), for
+// programs that change their outputs in some cycles only.
+struct io_test_odd_tag {};
+using odd_image = process_image<4, 11, 4, addressing::codesys, io_test_odd_tag>;
+
+// PROGRAM SOMETIMES_PRG: toggles %QX0.0 in its first three cycles and counts %QB10 up in
+// cycles 5 and 6, and changes no output in the others.
+struct SOMETIMES_PRG : program<SOMETIMES_PRG> {
+  [[no_unique_address]] located<BOOL, "%QX0.0", odd_image> bOut;
+  [[no_unique_address]] located<BYTE, "%QB10", odd_image> nLast;
+  using LOCATED = pins<&SOMETIMES_PRG::bOut, &SOMETIMES_PRG::nLast>;
+  var<INT> nCycle;
+  void body() {
+    if (nCycle < 3) bOut = !bOut;
+    if (nCycle == 5 || nCycle == 6) nLast = nLast + 1;
+    nCycle = nCycle + 1;
+  }
+};
+// PROGRAM SLOW_BIT_PRG: sets %QX0.1 (in a cycle that takes time).
+struct SLOW_BIT_PRG : program<SLOW_BIT_PRG> {
+  [[no_unique_address]] located<BOOL, "%QX0.1", odd_image> bOut;
+  using LOCATED = pins<&SLOW_BIT_PRG::bOut>;
+  void body() { bOut = TRUE; }
+};
+
 }  // namespace
 
 TEST_SUITE("application: process image") {
@@ -115,6 +140,47 @@ TEST_SUITE("application: process image") {
     plc.run_for(ms(1));
     CHECK(field.output<"%QX0.1">() == TRUE);
     CHECK(plc.task("Slow").statistics().last_cycle_time == LTIME::from_ticks(7500000));
+  }
+
+  TEST_CASE("a cycle that changes no output writes the published outputs unchanged") {
+    // Fast (every 1 ms, no execution time) changes outputs in its cycles 0-2 and 5-6 only;
+    // Slow (every 100 ms, 4 ms long, lower priority) sets bit 1 in its cycle at 0 ms, which
+    // reaches the field at 4 ms although Fast's cycles end and write in between. A byte a
+    // test writes into the image between cycles is no cycle's change: it is not published.
+    application plc{task<SLOW_BIT_PRG>{"Slow", cyclic{"T#100ms"_iec}, 5},
+                    task<SOMETIMES_PRG>{"Fast", cyclic{"T#1ms"_iec}, 0}, use_image<odd_image>{}};
+    simulated_io<odd_image> field;
+    plc.connect(field);
+    plc.task("Slow").model_execution_time(ms(4));
+    plc.start();
+    const auto published = [&] {
+      std::vector<int> bytes;
+      for (const std::byte b : plc.published_outputs()) bytes.push_back(std::to_integer<int>(b));
+      return bytes;
+    };
+    std::vector<std::vector<int>> seen;  // after each millisecond
+    for (int k = 0; k < 8; ++k) {
+      if (k == 3) odd_image::write<BYTE, "%QB5">(BYTE(0x5A));  // between cycles, by hand
+      plc.run_for(ms(1));
+      seen.push_back(published());
+      CHECK(field.write_count() == static_cast<std::size_t>(k + 1 + (k >= 4 ? 1 : 0)));  // + Slow's end
+    }
+    //               QB0 (bit 0 Fast, bit 1 Slow)    QB10
+    const std::vector<std::vector<int>> expected{
+        {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},  // 0 ms: Fast's cycle 0
+        {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},  // 1 ms: cycle 1
+        {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},  // 2 ms: cycle 2
+        {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},  // 3 ms: cycle 3 changes nothing
+        {3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},  // 4 ms: Slow's cycle ends
+        {3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},  // 5 ms: cycle 5
+        {3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2},  // 6 ms: cycle 6
+        {3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2},  // 7 ms: nothing
+    };
+    CHECK(seen == expected);
+    CHECK(field.output<"%QX0.1">() == TRUE);
+    CHECK(field.get<BYTE, "%QB10">() == 2);
+    CHECK(field.get<BYTE, "%QB5">() == 0);
+    CHECK(plc.task("Fast").statistics().cycles == 8);
   }
 
   TEST_CASE("a callback_io connects the application to hand-written I/O") {

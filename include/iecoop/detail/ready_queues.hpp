@@ -68,6 +68,17 @@ class ready_queues {
     busy_ |= bit(p);
   }
 
+  /// The head of `priority`'s queue, which has no cycle under way, runs a cycle that begins
+  /// and ends at once: begin() and end() in one.
+  void begin_and_end(std::size_t task, std::uint8_t priority) noexcept {
+    const std::size_t p = priority;
+    head_[p] = next_[task];
+    if (head_[p] == none) {
+      tail_[p] = none;
+      busy_ &= ~bit(p);
+    }
+  }
+
   /// The cycle under way at `priority` ends.
   void end(std::uint8_t priority) noexcept {
     const std::size_t p = priority;

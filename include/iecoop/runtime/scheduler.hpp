@@ -264,35 +264,18 @@ class scheduler {
   /// begin_cycle() does its work.
   void begin_cycle(std::size_t index) {
     task_state& t = tasks_[index];
-    t.released_ = false;
-    t.active_ = true;
     ready_.begin(index, t.settings_.priority);
-    t.remaining_ = t.cost_of(t.cycle_number_);
-    t.record_begin(now_);
-    const detail::fault_context_scope in_task({t.settings_.name, nullptr});
-    const detail::current_task_scope current(t);  // current_task() in the programs
-    if constexpr (requires { cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_); }) {
-      cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_ - 1);  // calls the observers itself
-    } else {
-      cycles_.begin_cycle(index, now_);
-      t.observers_.notify(now_, t.cycle_number_ - 1);
-    }
+    start_cycle(t, index, t.cost_of(t.cycle_number_));
   }
 
   /// Ends, at now(), the cycle of task `index` under way: the cycles' end_cycle() does its
   /// work, then the statistics and the watchdog are updated. A watchdog fault (the
   /// sensitivity-th overrun in a row, or one cycle longer than sensitivity x time) puts the
   /// scheduler in the exception state and reports fault_kind::watchdog.
-  void end_cycle(std::size_t index) {
+  [[gnu::noinline]] void end_cycle(std::size_t index) {  // inline in the loop only for cycles that take no time
     task_state& t = tasks_[index];
-    t.active_ = false;
     ready_.end(t.settings_.priority);
-    t.remaining_ = LTIME{};
-    cycles_.end_cycle(index, now_);
-    const LTIME cycle_time = t.record_end(now_);
-    if (t.settings_.kind == task_kind::freewheeling)
-      t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
-    if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
+    finish_cycle(t, index);
   }
 
   /// Ends, at now(), the cycles left under way (for a runner that takes over from run_until()).
@@ -342,6 +325,33 @@ class scheduler {
   void set_freewheeling_load(unsigned percent) noexcept { freewheeling_load_ = percent == 0 ? 1 : percent; }
 
  private:
+  // begin_cycle() after the ready queues: the cycle, which takes `cost` of processor time, starts.
+  void start_cycle(task_state& t, std::size_t index, LTIME cost) {
+    t.released_ = false;
+    t.active_ = true;
+    t.remaining_ = cost;
+    t.record_begin(now_);
+    const detail::fault_context_scope in_task({t.settings_.name, nullptr});
+    const detail::current_task_scope current(t);  // current_task() in the programs
+    if constexpr (requires { cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_); }) {
+      cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_ - 1);  // calls the observers itself
+    } else {
+      cycles_.begin_cycle(index, now_);
+      t.observers_.notify(now_, t.cycle_number_ - 1);
+    }
+  }
+
+  // end_cycle() after the ready queues.
+  void finish_cycle(task_state& t, std::size_t index) {
+    t.active_ = false;
+    t.remaining_ = LTIME{};
+    cycles_.end_cycle(index, now_);
+    const LTIME cycle_time = t.record_end(now_);
+    if (t.settings_.kind == task_kind::freewheeling)
+      t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
+    if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
+  }
+
   // release_due() while running.
   void release_due_now() {
     for (task_state& t : tasks_) {
@@ -466,9 +476,24 @@ class scheduler {
       if (next == no_task) break;
       task_state& t = tasks_[next];
       if (!t.active_) {
-        begin_cycle(next);
-        sample_events();  // its code may have raised an event of a higher-priority task:
-        continue;         // that one preempts the cycle right away
+        if (!has_event_tasks_) {
+          // Nothing its code does can release a task: a cycle that takes no processor time
+          // begins and ends at once, never queued as under way.
+          const LTIME cost = t.cost_of(t.cycle_number_);
+          if (cost == LTIME{}) {
+            ready_.begin_and_end(next, t.settings_.priority);
+            start_cycle(t, next, cost);
+            if (state_ == scheduler_state::running) finish_cycle(t, next);
+            continue;
+          }
+          ready_.begin(next, t.settings_.priority);
+          start_cycle(t, next, cost);
+          if (state_ != scheduler_state::running) break;
+        } else {
+          begin_cycle(next);
+          sample_events();  // its code may have raised an event of a higher-priority task:
+          continue;         // that one preempts the cycle right away
+        }
       }
       if (t.remaining_ != LTIME{}) {
         running_ = next;
