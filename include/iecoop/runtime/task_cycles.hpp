@@ -139,7 +139,8 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
 
   // Whether the two output areas differ: 8 bytes at a time, then the bytes left (memcmp would
   // be called, or expanded byte by byte).
-  static bool differs(const std::array<std::byte, output_bytes>& a, std::span<const std::byte, output_bytes> b) noexcept {
+  static bool differs(const std::array<std::byte, output_bytes>& a,
+                      std::span<const std::byte, output_bytes> b) noexcept {
     std::uint64_t any = 0;
     std::size_t i = 0;
     for (; i + 8 <= output_bytes; i += 8) {
