@@ -272,7 +272,9 @@ class scheduler {
   /// work, then the statistics and the watchdog are updated. A watchdog fault (the
   /// sensitivity-th overrun in a row, or one cycle longer than sensitivity x time) puts the
   /// scheduler in the exception state and reports fault_kind::watchdog.
-  [[gnu::noinline]] void end_cycle(std::size_t index) {  // inline in the loop only for cycles that take no time
+  // Not inlined: the dispatch loop then inlines finish_cycle() for the cycles that take no
+  // time, the common case (GCC inlines one of the two, not both: 229 instructions against 233).
+  [[gnu::noinline]] void end_cycle(std::size_t index) {
     task_state& t = tasks_[index];
     ready_.end(t.settings_.priority);
     finish_cycle(t, index);
