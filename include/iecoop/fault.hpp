@@ -53,12 +53,16 @@ struct fault_info {
   const char* pou = nullptr;
 };
 
+class task_info;  // <iecoop/runtime/task_info.hpp>
+
 /// Where the code that runs now was called from: the task whose cycle is under way and the
 /// program it is calling. The scheduler and its task cycles keep it; fault() reads it. One
 /// per process, as the scheduler runs the cycles of all tasks from one thread.
 struct fault_context {
   const char* task = nullptr;
   const char* pou = nullptr;
+  /// The task whose cycle runs, as current_task() gives it (nullptr outside a task cycle).
+  const task_info* cycle_task = nullptr;
 };
 
 /// A fault handler. It may return; the faulting operation then completes with its
@@ -120,25 +124,31 @@ using fault_handler = void (*)(const fault_info&);
 
 namespace detail {
 inline fault_handler current_fault_handler = &default_fault_handler;
-inline fault_context current_fault_context{};
+/// The context outside every scope: nothing runs.
+inline fault_context outside_cycles{};
+/// The context now: the innermost scope's. A pointer, so that a task cycle makes its task's
+/// context (kept with the task) current with one store and gives the previous one back with
+/// another; a program's name is written into it as the cycle calls the program.
+inline fault_context* current_fault_context = &outside_cycles;
 
-/// Sets the fault context for as long as it lives and restores the previous one after.
+/// Makes `context` the fault context for as long as it lives and restores the previous one
+/// after; `context` must outlive the scope.
 class fault_context_scope {
  public:
-  explicit fault_context_scope(fault_context context) noexcept : previous_(current_fault_context) {
-    current_fault_context = context;
+  explicit fault_context_scope(fault_context& context) noexcept : previous_(current_fault_context) {
+    current_fault_context = &context;
   }
   fault_context_scope(const fault_context_scope&) = delete;
   fault_context_scope& operator=(const fault_context_scope&) = delete;
   ~fault_context_scope() { current_fault_context = previous_; }
 
  private:
-  fault_context previous_;
+  fault_context* previous_;
 };
 }  // namespace detail
 
 /// The task and program running now (both nullptr outside a task cycle).
-[[nodiscard]] inline fault_context current_fault_context() noexcept { return detail::current_fault_context; }
+[[nodiscard]] inline fault_context current_fault_context() noexcept { return *detail::current_fault_context; }
 
 /// Installs `handler` (nullptr restores the default) and returns the previous one.
 /// Install handlers at start-up or in tests, not while tasks run concurrently.
@@ -155,7 +165,7 @@ inline fault_handler set_fault_handler(fault_handler handler) noexcept {
 /// during constant evaluation is a compile error.
 /// The fault carries the current fault context: the task and the program running.
 inline void fault(fault_kind kind, const char* message) {
-  const fault_context where = detail::current_fault_context;
+  const fault_context& where = *detail::current_fault_context;
   detail::current_fault_handler(fault_info{kind, message, where.task, where.pou});
 }
 

@@ -94,6 +94,7 @@ class task_state : public task_info {
   LTIME (*cost_function_)(std::uint64_t, void*) = nullptr;
   void* cost_context_ = nullptr;
   detail::cycle_observer_list observers_;
+  fault_context context_;  // the fault context of its cycles (the scheduler is not movable: &this stays)
 };
 
 /// What a scheduler drives: the work of a task cycle, at its start and at its end. `task` is
@@ -155,6 +156,7 @@ class scheduler {
       }
       tasks_[i].settings_ = s;
       tasks_[i].index_ = static_cast<std::int32_t>(i);
+      tasks_[i].context_ = fault_context{s.name, nullptr, &tasks_[i]};
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
     }
   }
@@ -333,8 +335,7 @@ class scheduler {
     t.active_ = true;
     t.remaining_ = cost;
     t.record_begin(now_);
-    const detail::fault_context_scope in_task({t.settings_.name, nullptr});
-    const detail::current_task_scope current(t);  // current_task() in the programs
+    const detail::fault_context_scope in_task(t.context_);  // fault() and current_task() in the programs
     if constexpr (requires { cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_); }) {
       cycles_.begin_cycle(index, now_, t.observers_, t.cycle_number_ - 1);  // calls the observers itself
     } else {
@@ -408,7 +409,8 @@ class scheduler {
       state_ = scheduler_state::exception;
       faulted_task_ = &t;
       clear_schedules();
-      const detail::fault_context_scope in_task({t.settings_.name, nullptr});
+      fault_context context{t.settings_.name, nullptr, nullptr};  // current_task(): none, as outside a cycle
+      const detail::fault_context_scope in_task(context);
       fault(fault_kind::watchdog,
             "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
     }

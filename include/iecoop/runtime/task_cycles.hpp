@@ -37,8 +37,9 @@ template <class Store, class... P>
 struct task_programs<Store, task<P...>> {
   // Each program is called with its name in the fault context (a fault names the program).
   static void run(Store& store) {
-    ((current_fault_context.pou = short_type_name_c<P>.data(), store.template get<P>()()), ...);
-    current_fault_context.pou = nullptr;
+    fault_context& context = *current_fault_context;  // the task's (the scheduler's scope)
+    ((context.pou = short_type_name_c<P>.data(), store.template get<P>()()), ...);
+    context.pou = nullptr;
   }
 };
 

@@ -24,6 +24,7 @@
 #include <cstdint>
 
 #include <iecoop/config.hpp>
+#include <iecoop/fault.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
@@ -123,25 +124,8 @@ namespace detail {
 /// constant, in read-only memory).
 inline constexpr task_info no_task{};
 
-/// The task whose cycle runs now, for current_task(); nullptr outside a task cycle. One per
-/// process, like the cycle clock and the fault context: the cycles of all tasks run in one
-/// thread.
-inline const task_info* current_task_info = nullptr;
-
-/// Makes `task` the current task for as long as it lives, then restores the one before (a
-/// cycle that interrupted another gives it back its task).
-class current_task_scope {
- public:
-  explicit current_task_scope(const task_info& task) noexcept : previous_(current_task_info) {
-    current_task_info = &task;
-  }
-  current_task_scope(const current_task_scope&) = delete;
-  current_task_scope& operator=(const current_task_scope&) = delete;
-  ~current_task_scope() { current_task_info = previous_; }
-
- private:
-  const task_info* previous_;
-};
+// The task whose cycle runs now is the fault context's cycle_task (fault.hpp): a task cycle
+// makes its task's context current, and with it the task, in one store.
 
 /// For a driver of cycles without a scheduler (the test kit's testing::cycles): a task of its
 /// own, whose cycles it records as the scheduler records its tasks'.
@@ -167,7 +151,7 @@ struct task_info_driver {
  * task": index() -1, name() "", interval() 0, cycle_number() 0, priority() 31.
  */
 [[nodiscard]] inline const task_info& current_task() noexcept {
-  const task_info* const task = detail::current_task_info;
+  const task_info* const task = detail::current_fault_context->cycle_task;
   return task != nullptr ? *task : detail::no_task;
 }
 

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include <iecoop/fault.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/runtime/task_info.hpp>
 #include <iecoop/standard/cycle_clock.hpp>
@@ -72,7 +73,11 @@ class cycles : public driver<cycles<Body>> {
                              task_settings{.name = task_name_, .kind = task_kind::cyclic, .interval = cycle_time_});
       task_driver::begin(task_, now_);
       {
-        const iecoop::detail::current_task_scope current(task_);
+        // current_task() in the body is the driver's task; a fault names the task and program of
+        // the context the cycles run in, as before.
+        iecoop::fault_context context = *iecoop::detail::current_fault_context;
+        context.cycle_task = &task_;
+        const iecoop::detail::fault_context_scope current(context);
         this->forces_.apply_at_start();
         detail::call_guarded(body_);  // a call through an unassigned interface ends it (faults.hpp)
         this->forces_.apply_at_end();
