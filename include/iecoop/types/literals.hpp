@@ -30,9 +30,12 @@ namespace iecoop {
 
 namespace detail {
 
-/// One static_assert per parse error, so the compiler prints the one that applies.
+/// One static_assert per parse error, so the compiler prints the one that applies. constexpr,
+/// not consteval, as the two below: Clang 16 leaves a call to a consteval function that a
+/// literal in a member function of a class template makes (an undefined reference at link
+/// time); the checks are static_asserts, made when the function is instantiated either way.
 template <parse_error E>
-consteval void check_literal() noexcept {
+constexpr void check_literal() noexcept {
   static_assert(E != parse_error::empty, "iecoop: empty IEC literal; write e.g. \"T#1s\"_iec");
   static_assert(E != parse_error::missing_prefix,
                 "iecoop: an IEC duration literal needs its prefix; write \"T#15ms\", not \"15ms\"");
@@ -83,7 +86,7 @@ consteval void check_literal() noexcept {
 /// The checks of a DATE, TOD or DT literal: its own words for a value out of range or too
 /// precise, the common ones for the rest.
 template <parse_error E>
-consteval void check_point_literal() noexcept {
+constexpr void check_point_literal() noexcept {
   static_assert(E != parse_error::out_of_range,
                 "iecoop: the date is outside its type's range (DATE and DT: 1970-01-01 to DT#2106-02-07-06:28:15; "
                 "LDATE and LDT: 1970-01-01 to LDT#2554-07-21-23:34:33.709551615); use LDATE# or LDT# for later dates");
@@ -283,7 +286,7 @@ consteval parse_result<T> parse_literal() noexcept {
 /// The literal `Given` breaks "only the highest unit may overflow"; `Write` spells the same
 /// duration written as IEC allows (the template arguments show both).
 template <class Given, class Write>
-consteval void duration_unit_overflow() noexcept {
+constexpr void duration_unit_overflow() noexcept {
   static_assert(dependent_false<Given>,
                 "iecoop: only the highest unit of a duration literal may overflow; write the literal `Write` spells "
                 "(the same duration) instead of the one `Given` spells");
