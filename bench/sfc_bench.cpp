@@ -4,7 +4,8 @@
 //
 //   BM_Sfc_chart         P_BATCH(): the chart's scan, after the clock and the inputs
 //   BM_Sfc_handwritten   hand_batch::scan, after the time stamp and the inputs
-//   BM_Sfc_paired        the two, taking turns in batches of 1000 scans
+//   BM_Sfc_paired        the two, taking turns in batches of 1000 scans (<P_BATCH>: the chart on
+//                        the compiled engine; <P_BATCH_GENERAL>: on the general engine)
 //
 // Counters: ns_per_scan; the paired one chart_ns, handwritten_ns and ratio, the medians over
 // the batches of each side's time per scan and of the ratio of two neighbouring batches (a
@@ -76,11 +77,12 @@ double median(std::vector<double> v) {
 
 // Batches of chart and hand-written scans in turn (each side first every other time), timed
 // apart; the benchmark's time is both sides'.
+template <class Chart>
 void BM_Sfc_paired(benchmark::State& state) {
   if (!twins_agree(state)) return;
   using clock = std::chrono::steady_clock;
   constexpr int batch = 1000;
-  P_BATCH p;
+  Chart p;
   hand_batch h{};
   std::uint32_t kc = 0;
   std::uint32_t kh = 0;
@@ -123,6 +125,7 @@ void BM_Sfc_paired(benchmark::State& state) {
 
 BENCHMARK(BM_Sfc_chart);
 BENCHMARK(BM_Sfc_handwritten);
-BENCHMARK(BM_Sfc_paired)->UseManualTime();
+BENCHMARK(BM_Sfc_paired<P_BATCH>)->UseManualTime();
+BENCHMARK(BM_Sfc_paired<P_BATCH_GENERAL>)->UseManualTime();
 
 }  // namespace

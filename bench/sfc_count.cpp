@@ -5,8 +5,9 @@
 //   iecoop_bench_sfc_count <kernel> <n>      iecoop_bench_sfc_count --list
 //   sh bench/callgrind.sh build/bench/iecoop_bench_sfc_count
 //
-// Kernels: sfc_chart (a scan of the 20-step chart), sfc_handwritten (a scan of the switch-based
-// twin), sfc_inputs (what both kernels spend on the clock, the inputs and the loop alone).
+// Kernels: sfc_chart (a scan of the 20-step chart, on the compiled engine), sfc_chart_general
+// (on the general engine), sfc_handwritten (a scan of the switch-based twin), sfc_inputs (what
+// the kernels spend on the clock, the inputs and the loop alone).
 // Before any kernel runs, the two sides must produce the same outputs over
 // sfc_programs::check_scans scans; the program fails if they do not.
 #include <cstdint>
@@ -36,7 +37,8 @@ struct kernel {
 };
 
 const kernel all_kernels[] = {
-    {"sfc_chart", sfc_programs::chart_scans},
+    {"sfc_chart", sfc_programs::chart_scans<sfc_programs::P_BATCH>},
+    {"sfc_chart_general", sfc_programs::chart_scans<sfc_programs::P_BATCH_GENERAL>},
     {"sfc_handwritten", sfc_programs::hand_scans},
     {"sfc_inputs", inputs_only},
 };
@@ -45,11 +47,13 @@ const kernel all_kernels[] = {
 
 int main(int argc, char** argv) {
   std::uint32_t sequences = 0;
-  const std::uint32_t agreed = sfc_programs::check(sequences);
-  if (agreed != sfc_programs::check_scans) {
-    std::fprintf(stderr, "iecoop_bench_sfc_count: the chart and the hand-written machine differ after scan %u\n",
-                 agreed);
-    return 1;
+  for (const std::uint32_t agreed : {sfc_programs::check<sfc_programs::P_BATCH>(sequences),
+                                     sfc_programs::check<sfc_programs::P_BATCH_GENERAL>(sequences)}) {
+    if (agreed != sfc_programs::check_scans) {
+      std::fprintf(stderr, "iecoop_bench_sfc_count: the chart and the hand-written machine differ after scan %u\n",
+                   agreed);
+      return 1;
+    }
   }
   return bench::run_count_main(argc, argv, all_kernels, "iecoop_bench_sfc_count");
 }

@@ -40,8 +40,9 @@ constexpr inputs inputs_at(std::uint32_t k) noexcept {
   return {k % 16 != 15, k % 3 == 0, k % 4 == 1, k % 5 == 2, k % 2 == 0, k % 3 == 1, k % 6 != 5};
 }
 
-// PROGRAM P_BATCH
-struct P_BATCH : program<P_BATCH> {
+// PROGRAM P_BATCH (Engine: none, the default engine; sfc::general_engine for the general one)
+template <class... Engine>
+struct P_BATCH_ON : program<P_BATCH_ON<Engine...>> {
   // VAR_INPUT
   BOOL START, LEVEL_HI, SENSOR_A, SENSOR_B, JOIN_OK, LEVEL_LO, OK;
   // VAR_OUTPUT: BOOL variables as actions
@@ -86,10 +87,10 @@ struct P_BATCH : program<P_BATCH> {
   void A_PACK() { C_PACK = C_PACK + 1; }
   void A_DONE() { C_DONE = C_DONE + 1; }
 
-  using P = P_BATCH;
+  using P = P_BATCH_ON;
   // clang-format off: one chart element a line, as textual SFC writes them
   sfc::chart<
-      P, sfc::codesys, sfc::INITIAL_STEP<&P::INIT, sfc::N<&P::A_IDLE>>,
+      P, sfc::codesys, Engine..., sfc::INITIAL_STEP<&P::INIT, sfc::N<&P::A_IDLE>>,
       sfc::TRANSITION<sfc::FROM<&P::INIT>, sfc::TO<&P::FILL>, &P::START>,
       sfc::STEP<&P::FILL, sfc::N<&P::A_FILL>, sfc::S<&P::MOTOR>>,
       sfc::TRANSITION<sfc::FROM<&P::FILL>, sfc::TO<&P::HEAT>, &P::LEVEL_HI>,
@@ -129,9 +130,12 @@ struct P_BATCH : program<P_BATCH> {
   void body() { chart(*this); }
 };
 // END_PROGRAM
+using P_BATCH = P_BATCH_ON<>;                             // the default engine (compiled, at -O2/-O3)
+using P_BATCH_GENERAL = P_BATCH_ON<sfc::general_engine>;  // the general engine
 
 /// Scan k of the chart: the cycle clock and the inputs, then the program.
-inline void chart_scan(P_BATCH& p, std::uint32_t k) noexcept {
+template <class P>
+inline void chart_scan(P& p, std::uint32_t k) noexcept {
   cycle_clock::set(LTIME::from_ticks(static_cast<std::uint64_t>(k) * scan_period_ms * 1'000'000U));
   const inputs in = inputs_at(k);
   p.START = in.START;
@@ -411,7 +415,8 @@ struct outputs {
   friend bool operator==(const outputs&, const outputs&) = default;
 };
 
-inline outputs outputs_of(const P_BATCH& p) noexcept {
+template <class... E>
+inline outputs outputs_of(const P_BATCH_ON<E...>& p) noexcept {
   return {{p.C_IDLE.value(), p.C_FILL.value(), p.C_HEAT.value(), p.C_BOOST.value(), p.C_PUMP.value(), p.C_MIX1.value(),
            p.C_MIX3.value(), p.C_MIX5.value(), p.C_DOSE1.value(), p.C_DOSE2.value(), p.C_DOSE4.value(),
            p.C_COOL.value(), p.C_DRAIN.value(), p.C_DRAIN2.value(), p.C_RINSE.value(), p.C_DRY.value(),
@@ -428,11 +433,13 @@ inline outputs outputs_of(const hand_batch& h) noexcept {
 /// The number of scans `check` compares.
 inline constexpr std::uint32_t check_scans = 1000;
 
-/// Runs both sides for `check_scans` scans from their initial state and returns the first scan
-/// after which their outputs differ, or check_scans if none does; `sequences` gets the number
-/// of times the chart reached DONE (so that the check covers the whole sequence, many times).
+/// Runs the chart on the engine of P (P_BATCH or P_BATCH_GENERAL) and the hand-written machine
+/// for `check_scans` scans from their initial state and returns the first scan after which their
+/// outputs differ, or check_scans if none does; `sequences` gets the number of times the chart
+/// reached DONE (so that the check covers the whole sequence, many times).
+template <class P = P_BATCH>
 inline std::uint32_t check(std::uint32_t& sequences) noexcept {
-  P_BATCH p;
+  P p;
   hand_batch h{};
   sequences = 0;
   bool done = false;
@@ -457,9 +464,10 @@ inline std::uint32_t checksum(const outputs& o) noexcept {
 // Makes the compiler assume that memory was read and written here (as benchmark::ClobberMemory).
 inline void barrier() { asm volatile("" ::: "memory"); }
 
-/// n scans of the chart.
+/// n scans of the chart (on the engine of P).
+template <class P = P_BATCH>
 inline std::uint32_t chart_scans(std::uint64_t n) {
-  P_BATCH p;
+  P p;
   for (std::uint64_t i = 0; i < n; ++i) {
     chart_scan(p, static_cast<std::uint32_t>(i));
     barrier();

@@ -73,7 +73,7 @@ class chart {
  private:
   static_assert([]<class... Es>(detail::type_list<Es...>) { return (detail::chart_element<Es> && ...); }(all{}),
                 "iecoop: a chart holds STEP<>, INITIAL_STEP<> and TRANSITION<> elements, after an optional scan order "
-                "(sfc::codesys or sfc::matiec) first");
+                "(sfc::codesys or sfc::matiec) and an optional engine (sfc::general_engine or sfc::compiled_engine)");
 
   using steps = typename detail::only<detail::element_kind::step, all>::type;
   using transitions = typename detail::only<detail::element_kind::transition, all>::type;
@@ -293,6 +293,15 @@ class chart {
                   "p.nCount != 0; } (ST: nCount <> 0)");
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
+    // No flag set (the usual scan): one test for all of them.
+    if (started_ && !(bool(SFCInit) | bool(SFCReset) | bool(SFCQuitError) | quit_held_ | bool(SFCPause) | bool(SFCTip) |
+                      tip_previous_)) [[likely]] {
+      const TIME elapsed = TIME(now - last_);
+      last_ = now;
+      detail::engine_access::ref(SFCTrans) = FALSE;
+      scan(pou, elapsed, false);
+      return;
+    }
     TIME elapsed = started_ ? TIME(now - last_) : TIME{};
     last_ = now;
     if (!started_ || SFCInit || SFCReset) {
@@ -315,11 +324,7 @@ class chart {
     const bool tip = SFCTip && !tip_previous_;
     tip_previous_ = SFCTip;
     detail::engine_access::ref(SFCTrans) = FALSE;
-    if constexpr (order::actions_first) {
-      scan_codesys(pou, elapsed, tip);
-    } else {
-      scan_matiec(pou, elapsed, tip);
-    }
+    scan(pou, elapsed, tip);
   }
 
   /// The control of an IEC action of the chart: `chart.action<&P::A_FILL>().Q`.
@@ -417,6 +422,7 @@ class chart {
   // --- Reset ------------------------------------------------------------------------------
   void restart(POU& pou) {
     started_ = true;
+    state_ = next_state_ = 0;  // the initial step's state
     each_step([&](auto i) {
       constexpr std::size_t I = decltype(i)::value;
       const bool initial = I == initial_index;
@@ -568,19 +574,21 @@ class chart {
     }
   };
   // Whether some step has a CODESYS "active" step action (code that may read other steps' times).
-  static constexpr bool has_active_actions = [] {
+  template <detail::step_action_kind K>
+  static constexpr bool has_step_actions = [] {
     bool result = false;
     [&]<class... S>(detail::type_list<S...>) {
       (
           [&]<class... It>(detail::type_list<It...>) {
-            ((result = result || (It::iecoop_sfc_element == detail::element_kind::step_action &&
-                                  step_action_kind_of<It>() == detail::step_action_kind::active)),
+            ((result = result ||
+                       (It::iecoop_sfc_element == detail::element_kind::step_action && step_action_kind_of<It>() == K)),
              ...);
           }(typename S::items{}),
           ...);
     }(steps{});
     return result;
   }();
+  static constexpr bool has_active_actions = has_step_actions<detail::step_action_kind::active>;
   static constexpr auto advance_and_check_table = step_table(advance_and_check{});
   static constexpr auto apply_pending_table = step_table(apply_pending{});
   static constexpr auto apply_left_table = step_table(apply_left{});
@@ -644,7 +652,7 @@ class chart {
     template <std::size_t I>
     static void call(chart& c, POU& pou, bool tip) {
       [&]<std::size_t... K>(std::index_sequence<K...>) {
-        ((home<transition_order[K]> == I ? c.template try_fire<transition_order[K]>(pou, tip) : void()), ...);
+        ((home<transition_order[K]> == I ? void(c.template try_fire<transition_order[K]>(pou, tip)) : void()), ...);
       }(std::make_index_sequence<transition_count>{});
     }
   };
@@ -658,7 +666,7 @@ class chart {
       detail::for_each_bit<step_count>(active_, fire_table, *this, pou, tip);
     } else {
       [&]<std::size_t... K>(std::index_sequence<K...>) {
-        (try_fire<transition_order[K]>(pou, tip), ...);
+        (void(try_fire<transition_order[K]>(pou, tip)), ...);
       }(std::make_index_sequence<transition_count>{});
     }
   }
@@ -672,26 +680,38 @@ class chart {
     return ok;
   }();
 
+  // Whether transition Tr fired.
   template <std::size_t Tr>
-  void try_fire(POU& pou, bool tip) {
-    if constexpr (ends_valid<Tr>) try_fire_valid<Tr>(pou, tip);
+  bool try_fire(POU& pou, bool tip) {
+    if constexpr (ends_valid<Tr>) {
+      return try_fire_valid<Tr>(pou, tip);
+    } else {
+      return false;
+    }
   }
 
-  template <std::size_t Tr>
-  void try_fire_valid(POU& pou, bool tip) {
+  // The compiled engine knows which sources are active (Active false) and, where no other
+  // transition of the state shares a source, that none was left (Left false).
+  template <std::size_t Tr, bool Active = true, bool Left = true>
+  bool try_fire_valid(POU& pou, bool tip) {
     using E = ends<transition_at<Tr>>;
     // Enabled: every source step active (at the start of the scan) and not left by a
     // transition tested before this one; each source's minimum time reached.
     constexpr step_set from = sources<Tr>;
     for (std::size_t w = 0; w < from.size(); ++w) {
-      if ((active_[w] & from[w]) != from[w] || (left_[w] & from[w]) != 0) return;
+      if constexpr (Active) {
+        if ((active_[w] & from[w]) != from[w]) return false;
+      }
+      if constexpr (Left) {
+        if ((left_[w] & from[w]) != 0) return false;
+      }
     }
     const bool timed = [&]<std::size_t... F>(std::index_sequence<F...>) {
       return (min_time_reached<E::from[F]>(pou) && ...);
     }(std::make_index_sequence<E::from.size()>{});
-    if (!timed) return;
+    if (!timed) return false;
     if (!SFCTipMode || !tip) {
-      if (!detail::test<transition_at<Tr>::condition>(pou)) return;
+      if (!detail::test<transition_at<Tr>::condition>(pou)) return false;
     }
     detail::engine_access::ref(SFCTrans) = TRUE;
     for (std::size_t w = 0; w < from.size(); ++w) left_[w] |= from[w];
@@ -703,6 +723,7 @@ class chart {
     [&]<std::size_t... G>(std::index_sequence<G...>) {
       (activate<E::to[G]>(pou), ...);
     }(std::make_index_sequence<E::to.size()>{});
+    return true;
   }
 
   template <std::size_t I>
@@ -910,20 +931,494 @@ class chart {
     return result;
   }();
 
+  // The actions whose control this scan recomputes (those marked, those after a pulse, those
+  // whose delay or limit runs); the marks and the last scan's final scans are forgotten.
+  action_set take_dirty() noexcept {
+    for (std::size_t w = 0; w < dirty_.size(); ++w) {
+      dirty_[w] |= pulsed_[w] | timing_[w];
+      pulsed_[w] = timing_[w] = final_[w] = 0;
+    }
+    const action_set dirty = dirty_;
+    dirty_ = action_set{};
+    return dirty;
+  }
+
   void iec_actions(POU& pou, TIME elapsed) {
     if constexpr (action_count > 0) {
       // Every control first, then the bodies: an action body cannot change another's Q mid-scan.
-      for (std::size_t w = 0; w < dirty_.size(); ++w) {
-        dirty_[w] |= pulsed_[w] | timing_[w];
-        pulsed_[w] = timing_[w] = final_[w] = 0;
-      }
-      const action_set dirty = dirty_;
-      dirty_ = action_set{};
-      detail::for_each_bit<action_count>(dirty, control_table, *this, pou, elapsed);
+      detail::for_each_bit<action_count>(take_dirty(), control_table, *this, pou, elapsed);
       action_set run = q_;
       for (std::size_t w = 0; w < run.size(); ++w) run[w] &= with_body[w];
       if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
       detail::for_each_bit<action_count>(run, body_table, pou);
+    }
+  }
+
+  // --- The compiled engine -----------------------------------------------------------------
+  // The sets of steps that can be active at once (the chart's states) are found at compile time
+  // from the initial step through the transitions. Where there are at most max_states, each
+  // state gets a function of its own (scan_codesys_in<M>, scan_matiec_in<M>) that does what the
+  // general scan does with its active steps known: the steps' times, checks and step actions,
+  // the transitions to test, in their order, and the bodies of the actions, in their order, with
+  // an action qualified N only called in the states where one of its steps is active. A scan is
+  // one call through a table of those functions; a state that fired a transition knows the
+  // state it leads to. The actions that are not N only, and every action's control where a
+  // step changed, go through the general code (control_of; an N-only action's control is a
+  // test of its steps). The state lives beside the general engine's bit sets, which are kept
+  // as before: both engines compute the same, scan for scan (tests/unit/sfc_engines_test.cpp).
+  static constexpr std::size_t max_states = 64;
+  static constexpr std::uint8_t no_state = 0xFF;
+
+  template <std::size_t Tr>
+  static constexpr step_set targets = [] {
+    step_set result{};
+    for (const std::size_t s : ends<transition_at<Tr>>::to) {
+      if (s != detail::npos) detail::set_bit<step_count>(result, s);
+    }
+    return result;
+  }();
+  static constexpr bool subset(const step_set& a, const step_set& b) noexcept {
+    for (std::size_t w = 0; w < a.size(); ++w) {
+      if ((a[w] & ~b[w]) != 0) return false;
+    }
+    return true;
+  }
+  static constexpr bool intersect(const step_set& a, const step_set& b) noexcept {
+    for (std::size_t w = 0; w < a.size(); ++w) {
+      if ((a[w] & b[w]) != 0) return true;
+    }
+    return false;
+  }
+  static constexpr step_set after(const step_set& m, const step_set& from, const step_set& to) noexcept {
+    step_set result{};
+    for (std::size_t w = 0; w < m.size(); ++w) result[w] = (m[w] & ~from[w]) | to[w];
+    return result;
+  }
+
+  struct state_table {
+    std::array<step_set, max_states> sets{};
+    std::size_t count = 0;
+    bool complete = true;
+  };
+  static constexpr state_table states = [] {
+    state_table t{};
+    step_set start{};
+    detail::set_bit<step_count>(start, initial_index);
+    t.sets[0] = start;
+    t.count = 1;
+    for (std::size_t i = 0; i < t.count && t.complete; ++i) {
+      const step_set m = t.sets[i];
+      [&]<std::size_t... Tr>(std::index_sequence<Tr...>) {
+        (
+            [&] {
+              if constexpr (ends_valid<Tr>) {
+                if (!t.complete || !subset(sources<Tr>, m)) return;
+                const step_set next = after(m, sources<Tr>, targets<Tr>);
+                for (std::size_t k = 0; k < t.count; ++k) {
+                  if (t.sets[k] == next) return;
+                }
+                if (t.count == max_states) {
+                  t.complete = false;
+                  return;
+                }
+                t.sets[t.count++] = next;
+              }
+            }(),
+            ...);
+      }(std::make_index_sequence<transition_count>{});
+    }
+    return t;
+  }();
+#if defined(__OPTIMIZE_SIZE__)
+  static constexpr bool compiled_by_default = false;  // -Os: the smaller engine
+#else
+  static constexpr bool compiled_by_default = true;
+#endif
+  static constexpr bool compiled =
+      states.complete && (split::engine == detail::engine_choice::compiled ||
+                          (split::engine == detail::engine_choice::unset && compiled_by_default));
+
+ public:
+  /// TRUE where the chart runs on the engine compiled from its states, FALSE on the general
+  /// engine (sfc::general_engine); both compute the same (docs/sfc.md, "How a chart is run").
+  [[nodiscard]] static constexpr bool runs_compiled() noexcept { return compiled; }
+
+ private:
+  static constexpr std::size_t state_count = states.count;
+
+  // The state transition Tr leads to from state M.
+  template <std::size_t M, std::size_t Tr>
+  static constexpr std::uint8_t state_after = [] {
+    const step_set next = after(states.sets[M], sources<Tr>, targets<Tr>);
+    for (std::size_t k = 0; k < state_count; ++k) {
+      if (states.sets[k] == next) return static_cast<std::uint8_t>(k);
+    }
+    return no_state;
+  }();
+  // The state of the steps `set` (no_state if none).
+  static std::uint8_t state_of(const step_set& set) noexcept {
+    for (std::size_t k = 0; k < state_count; ++k) {
+      if (states.sets[k] == set) return static_cast<std::uint8_t>(k);
+    }
+    return no_state;
+  }
+
+  // A list of indices known at compile time (steps, transitions, action ranks) and its length.
+  template <std::size_t N>
+  struct index_list {
+    std::array<std::size_t, (N == 0 ? 1 : N)> at{};
+    std::size_t size = 0;
+  };
+  // f(integral_constant<List.at[J]>) for each entry J of List, in order (one instantiation per
+  // entry, where a fold over all steps with a test would make one per step and state).
+  template <const auto& List, class F>
+  static void each_of(F&& f) {
+    [&]<std::size_t... J>(std::index_sequence<J...>) {
+      (f(std::integral_constant<std::size_t, List.at[J]>{}), ...);
+    }(std::make_index_sequence<List.size>{});
+  }
+
+  // The steps of state M, in the order of the steps.
+  template <std::size_t M>
+  static constexpr index_list<step_count> steps_in = [] {
+    index_list<step_count> list{};
+    for (std::size_t i = 0; i < step_count; ++i) {
+      if (detail::test_bit<step_count>(states.sets[M], i)) list.at[list.size++] = i;
+    }
+    return list;
+  }();
+  template <std::size_t M, class F>
+  static void each_step_in(F&& f) {
+    each_of<steps_in<M>>(std::forward<F>(f));
+  }
+
+  // Whether the action of rank K is associated with its steps by N alone, and with which steps.
+  template <std::size_t I, std::size_t A>
+  static constexpr void n_associations_of(bool& only, step_set& with) {
+    []<class... It>(detail::type_list<It...>, bool& o, step_set& w) {
+      (
+          [&] {
+            if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+              if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
+                if constexpr (It::kind == qualifier::N) {
+                  detail::set_bit<step_count>(w, I);
+                } else {
+                  o = false;
+                }
+              }
+            }
+          }(),
+          ...);
+    }(typename step_at<I>::items{}, only, with);
+  }
+  template <std::size_t K>
+  struct n_action {
+    static constexpr std::pair<bool, step_set> found = [] {
+      bool only = true;
+      step_set with{};
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (n_associations_of<I, action_order[K]>(only, with), ...);
+      }(std::make_index_sequence<step_count>{});
+      return std::pair<bool, step_set>{only, with};
+    }();
+    static constexpr bool only = found.first;
+    static constexpr step_set steps = found.second;
+  };
+
+  // An action qualified N alone: Q is TRUE while one of its steps is active; a final scan when
+  // it falls (codesys). What control_of computes for it, without gathering its inputs.
+  struct control_n {
+    template <std::size_t K>
+    static void call(chart& c, POU& pou, TIME elapsed) {
+      if constexpr (!n_action<K>::only) {
+        control_of::template call<K>(c, pou, elapsed);
+      } else {
+        constexpr std::size_t A = action_order[K];
+        bool q = false;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+          (
+              [&] {
+                if constexpr (detail::test_bit<step_count>(n_action<K>::steps, I)) q = q || bool(X<I>(pou));
+              }(),
+              ...);
+        }(std::make_index_sequence<step_count>{});
+        detail::control& s = c.controls_[A];
+        const bool final_scan = order::actions_first && s.q && !q;
+        s.q = q;
+        if (q) {
+          detail::set_bit<action_count>(c.q_, K);
+        } else {
+          detail::clear_bit<action_count>(c.q_, K);
+        }
+        if (final_scan) {
+          if constexpr (with_body_of<K>) detail::set_bit<action_count>(c.final_, K);
+          detail::set_bit<action_count>(c.pulsed_, K);
+        }
+        detail::engine_access::ref(c.states_[A].Q) = BOOL(q);
+        detail::engine_access::ref(c.states_[A].A) = BOOL(q || final_scan);
+        if constexpr (detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value) {
+          pou.*action_at<A> = BOOL(q);
+        }
+      }
+    }
+  };
+  static constexpr auto control_n_table = []<std::size_t... K>(std::index_sequence<K...>) {
+    return std::array<void (*)(chart&, POU&, TIME), action_count>{&control_n::template call<K>...};
+  }(std::make_index_sequence<action_count>{});
+
+  // SFCCurrentStep in state M: the last declared of its steps.
+  template <std::size_t M>
+  static constexpr std::string_view current_step_in = [] {
+    constexpr std::array<std::string_view, step_count> names = step_names();
+    return steps_in<M>.size == 0 ? std::string_view{} : names[steps_in<M>.at[steps_in<M>.size - 1]];
+  }();
+
+  // What steps_of_scan does, in state M.
+  template <std::size_t M>
+  void steps_of_scan_in(POU& pou, TIME elapsed, bool changed) {
+    if constexpr (has_step_actions<detail::step_action_kind::exit>) {
+      detail::for_each_bit<step_count>(deactivated_, exit_table, *this, pou, elapsed);
+    }
+    if constexpr (has_step_actions<detail::step_action_kind::entry>) {
+      // (not only M's steps: in the matiec order a step activated by a reset and left in the
+      // same scan has its entry action too)
+      detail::for_each_bit<step_count>(activated_, entry_table, *this, pou, elapsed);
+    }
+    each_step_in<M>([&](auto i) { active_step::template call<decltype(i)::value>(*this, pou, elapsed); });
+    if (changed) {
+      for (std::size_t v = 0; v < activated_.size(); ++v) {  // the controls of the changed steps' actions
+        for (std::uint64_t m = activated_[v] | deactivated_[v]; m != 0; m &= m - 1) {
+          const action_set& mask = step_action_mask[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
+          for (std::size_t w = 0; w < dirty_.size(); ++w) dirty_[w] |= mask[w];
+        }
+      }
+    }
+  }
+
+  // What iec_actions does, in state M.
+  // The actions with a body that are not N only: their Q is tested at run time.
+  static constexpr action_set tested_bodies = [] {
+    action_set result{};
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      ((with_body_of<K> && !n_action<K>::only ? detail::set_bit<action_count>(result, K) : void()), ...);
+    }(std::make_index_sequence<action_count>{});
+    return result;
+  }();
+
+  // The ranks whose body state M calls, in run order: the N-only actions with a step in M, and
+  // the others with a body (their Q tested at run time).
+  template <std::size_t M>
+  static constexpr index_list<action_count> bodies_in = [] {
+    index_list<action_count> list{};
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (
+          [&] {
+            if constexpr (with_body_of<K>) {
+              if (!n_action<K>::only || intersect(n_action<K>::steps, states.sets[M])) list.at[list.size++] = K;
+            }
+          }(),
+          ...);
+    }(std::make_index_sequence<action_count>{});
+    return list;
+  }();
+
+  template <std::size_t M>
+  void iec_actions_in(POU& pou, TIME elapsed) {
+    if constexpr (action_count > 0) {
+      bool pending = false;  // a control to compute, or a final scan of the last scan to forget
+      for (std::size_t w = 0; w < dirty_.size(); ++w)
+        pending = pending || (dirty_[w] | pulsed_[w] | timing_[w] | final_[w]) != 0;
+      if (pending) {
+        detail::for_each_bit<action_count>(take_dirty(), control_n_table, *this, pou, elapsed);
+        if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
+      }
+      bool tested = false;  // one test for all the actions whose Q is known only at run time
+      for (std::size_t w = 0; w < q_.size(); ++w) tested = tested || (q_[w] & tested_bodies[w]) != 0;
+      each_of<bodies_in<M>>([&](auto k) {
+        constexpr std::size_t K = decltype(k)::value;
+        if constexpr (n_action<K>::only) {
+          body_of::template call<K>(pou);
+        } else {
+          if (tested && detail::test_bit<action_count>(q_, K)) body_of::template call<K>(pou);
+        }
+      });
+    }
+  }
+
+  // Each transition's sources and whether its steps are all in the chart, as arrays.
+  static constexpr std::array<step_set, transition_count> all_sources =
+      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+        return std::array<step_set, transition_count>{sources<Tr>...};
+      }(std::make_index_sequence<transition_count>{});
+  static constexpr std::array<std::size_t, transition_count> all_homes =
+      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+        return std::array<std::size_t, transition_count>{home<Tr>...};
+      }(std::make_index_sequence<transition_count>{});
+  static constexpr std::array<bool, transition_count> all_valid = []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+    return std::array<bool, transition_count>{ends_valid<Tr>...};
+  }(std::make_index_sequence<transition_count>{});
+
+  // The transitions state M tests, in the order fire() tests them (by step, else by priority).
+  template <std::size_t M>
+  static constexpr index_list<transition_count> candidates_in = [] {
+    index_list<transition_count> list{};
+    const auto can = [](std::size_t tr) { return all_valid[tr] && subset(all_sources[tr], states.sets[M]); };
+    if constexpr (by_step) {
+      for (std::size_t i = 0; i < step_count; ++i) {
+        if (!detail::test_bit<step_count>(states.sets[M], i)) continue;
+        for (std::size_t k = 0; k < transition_count; ++k) {
+          if (all_homes[transition_order[k]] == i && can(transition_order[k]))
+            list.at[list.size++] = transition_order[k];
+        }
+      }
+    } else {
+      for (std::size_t k = 0; k < transition_count; ++k) {
+        if (can(transition_order[k])) list.at[list.size++] = transition_order[k];
+      }
+    }
+    return list;
+  }();
+  // Whether another transition state M tests shares a source step with transition Tr (then one
+  // tested before Tr may have left it).
+  template <std::size_t M, std::size_t Tr>
+  static constexpr bool shares_source = [] {
+    for (std::size_t j = 0; j < candidates_in<M>.size; ++j) {
+      const std::size_t u = candidates_in<M>.at[j];
+      if (u != Tr && intersect(all_sources[u], all_sources[Tr])) return true;
+    }
+    return false;
+  }();
+
+  // What fire does, in state M: the transitions whose sources are all in M, in their order;
+  // next_state_ gets the state the scan's firings lead to.
+  template <std::size_t M>
+  void fire_in(POU& pou, bool tip) {
+    next_state_ = static_cast<std::uint8_t>(M);
+    if (SFCTipMode && !tip) return;
+    unsigned fired = 0;
+    std::uint8_t next = static_cast<std::uint8_t>(M);
+    each_of<candidates_in<M>>([&](auto tr) {
+      constexpr std::size_t Tr = decltype(tr)::value;
+      if (try_fire_valid<Tr, false, shares_source<M, Tr>>(pou, tip)) {
+        next = fired++ == 0 ? state_after<M, Tr> : no_state;
+      }
+    });
+    next_state_ = next;
+  }
+
+  // The codesys scan in state M, after scan_codesys's first lines.
+  template <std::size_t M>
+  void scan_codesys_in(POU& pou, TIME elapsed, bool tip, bool changed) {
+    if (changed) {  // what apply_pending does, M's steps known: X := _X, T := 0 where activated
+      for (std::size_t w = 0; w < deactivated_.size(); ++w) {
+        for (std::uint64_t m = deactivated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
+          detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).X) = FALSE;
+        }
+      }
+      each_step_in<M>([&](auto i) {
+        constexpr std::size_t I = decltype(i)::value;
+        if (detail::test_bit<step_count>(activated_, I)) {
+          X<I>(pou) = TRUE;
+          T<I>(pou) = TIME{};
+        }
+      });
+      active_ = states.sets[M];
+      if constexpr (steps_in<M>.size > 0) detail::engine_access::name(SFCCurrentStep, current_step_in<M>);
+    }
+    each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
+    steps_of_scan_in<M>(pou, elapsed, changed);
+    iec_actions_in<M>(pou, elapsed);
+    fire_in<M>(pou, tip);
+  }
+
+  // The matiec scan in state M, after scan_matiec's first lines; where a transition fired, the
+  // rest of the scan runs in the state it led to.
+  template <std::size_t M>
+  void scan_matiec_in(POU& pou, TIME elapsed, bool tip, bool) {
+    each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
+    fire_in<M>(pou, tip);
+    if (SFCTrans) {
+      apply_matiec_evolution(pou, elapsed);
+      state_ = next_state_ != no_state ? next_state_ : state_of(active_);
+      if (state_ == no_state) {
+        steps_of_scan(pou, elapsed);
+        iec_actions(pou, elapsed);
+      } else {
+        state_functions<>::rest[state_](*this, pou, elapsed);
+      }
+      return;
+    }
+    rest_matiec_in<M>(pou, elapsed);
+  }
+  template <std::size_t M>
+  void rest_matiec_in(POU& pou, TIME elapsed) {
+    const bool changed = detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_);
+    steps_of_scan_in<M>(pou, elapsed, changed);
+    iec_actions_in<M>(pou, elapsed);
+  }
+
+  // The tables of the states' functions (instantiated only for a compiled chart).
+  template <bool = true>
+  struct state_functions {
+    template <std::size_t M>
+    static void scan(chart& c, POU& pou, TIME elapsed, bool tip, bool changed) {
+      if constexpr (order::actions_first) {
+        c.template scan_codesys_in<M>(pou, elapsed, tip, changed);
+      } else {
+        c.template scan_matiec_in<M>(pou, elapsed, tip, changed);
+      }
+    }
+    template <std::size_t M>
+    static void rest_of(chart& c, POU& pou, TIME elapsed) {
+      c.template rest_matiec_in<M>(pou, elapsed);
+    }
+    static constexpr auto scans = []<std::size_t... M>(std::index_sequence<M...>) {
+      return std::array<void (*)(chart&, POU&, TIME, bool, bool), state_count>{&scan<M>...};
+    }(std::make_index_sequence<state_count>{});
+    static constexpr auto rest = []<std::size_t... M>(std::index_sequence<M...>) {
+      return std::array<void (*)(chart&, POU&, TIME), state_count>{&rest_of<M>...};
+    }(std::make_index_sequence<state_count>{});
+  };
+
+  void scan(POU& pou, TIME elapsed, bool tip) {
+    if constexpr (compiled) {
+      scan_compiled(pou, elapsed, tip);
+    } else if constexpr (order::actions_first) {
+      scan_codesys(pou, elapsed, tip);
+    } else {
+      scan_matiec(pou, elapsed, tip);
+    }
+  }
+
+  void scan_compiled(POU& pou, TIME elapsed, bool tip) {
+    if constexpr (order::actions_first) {
+      activated_ = entered_;
+      deactivated_ = left_;
+      entered_ = left_ = step_set{};
+      const bool changed = detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_);
+      if (changed) {
+        state_ = next_state_;
+        if (state_ == no_state) {
+          step_set now{};
+          for (std::size_t w = 0; w < now.size(); ++w) now[w] = (active_[w] & ~deactivated_[w]) | activated_[w];
+          state_ = state_of(now);
+        }
+      }
+      if (state_ == no_state) {  // (a set of steps the compile-time search did not find: none is known)
+        scan_codesys_rest(pou, elapsed, tip);
+        next_state_ = no_state;  // found again from the steps at the next change
+      } else {
+        state_functions<>::scans[state_](*this, pou, elapsed, tip, changed);
+      }
+    } else {
+      activated_ = entered_;  // only a reset leaves an activation pending
+      deactivated_ = step_set{};
+      entered_ = left_ = step_set{};
+      if (state_ == no_state) {
+        scan_matiec_rest(pou, elapsed, tip);
+      } else {
+        state_functions<>::scans[state_](*this, pou, elapsed, tip, false);
+      }
     }
   }
 
@@ -932,6 +1427,10 @@ class chart {
     activated_ = entered_;
     deactivated_ = left_;
     entered_ = left_ = step_set{};
+    scan_codesys_rest(pou, elapsed, tip);
+  }
+
+  void scan_codesys_rest(POU& pou, TIME elapsed, bool tip) {
     if (detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_)) {
       step_set changed = activated_;
       for (std::size_t w = 0; w < changed.size(); ++w) changed[w] |= deactivated_[w];
@@ -952,21 +1451,28 @@ class chart {
     activated_ = entered_;  // only a reset leaves an activation pending
     deactivated_ = step_set{};
     entered_ = left_ = step_set{};
+    scan_matiec_rest(pou, elapsed, tip);
+  }
+
+  void scan_matiec_rest(POU& pou, TIME elapsed, bool tip) {
     detail::for_each_bit<step_count>(active_, advance_time_table, *this, pou, elapsed);
     fire(pou, tip);
-    if (SFCTrans) {
-      detail::for_each_bit<step_count>(left_, apply_left_table, *this, pou, elapsed);
-      detail::for_each_bit<step_count>(entered_, apply_entered_table, *this, pou, elapsed);
-      for (std::size_t w = 0; w < active_.size(); ++w) {
-        active_[w] = (active_[w] & ~left_[w]) | entered_[w];
-        activated_[w] |= entered_[w];
-        deactivated_[w] = left_[w];
-      }
-      entered_ = left_ = step_set{};
-      current_step();
-    }
+    if (SFCTrans) apply_matiec_evolution(pou, elapsed);
     steps_of_scan(pou, elapsed);
     iec_actions(pou, elapsed);
+  }
+
+  // matiec: the transitions of this scan take effect now.
+  void apply_matiec_evolution(POU& pou, TIME elapsed) {
+    detail::for_each_bit<step_count>(left_, apply_left_table, *this, pou, elapsed);
+    detail::for_each_bit<step_count>(entered_, apply_entered_table, *this, pou, elapsed);
+    for (std::size_t w = 0; w < active_.size(); ++w) {
+      active_[w] = (active_[w] & ~left_[w]) | entered_[w];
+      activated_[w] |= entered_[w];
+      deactivated_[w] = left_[w];
+    }
+    entered_ = left_ = step_set{};
+    current_step();
   }
 
   step_set active_{};       // the steps whose X is TRUE
@@ -982,6 +1488,8 @@ class chart {
   std::array<detail::control, action_count> controls_{};
   std::array<action_state, action_count> states_{};
   TIME last_{};
+  std::uint8_t state_ = 0;       // compiled engine: the state of the active steps (no_state: the general scan)
+  std::uint8_t next_state_ = 0;  // ... the state the scan's transitions lead to (codesys: for the next scan)
   bool started_ = false;
   bool quit_held_ = false;
   bool tip_previous_ = false;

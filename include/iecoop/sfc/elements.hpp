@@ -49,6 +49,17 @@ struct matiec {
 template <class T>
 concept ScanOrder = std::is_same_v<T, codesys> || std::is_same_v<T, matiec>;
 
+/// After the scan order (or first): the engine that runs the chart (docs/sfc.md, "How a chart is
+/// run"). Both compute the same, scan for scan. The compiled engine is code written for each set
+/// of steps the chart can have active together (at most 64 sets): faster, and larger. The
+/// general engine keeps the active steps and the actions' Q as bit sets: smaller. Without
+/// either, a chart gets the compiled engine where it can, except in a build optimised for size
+/// (-Os, as firmware is built), which gets the general one.
+struct general_engine {};
+/// See general_engine: the compiled engine also under -Os (where the chart has at most 64 sets
+/// of active steps; else the general one).
+struct compiled_engine {};
+
 // --- Action associations ----------------------------------------------------------------
 
 /// IEC's action qualifiers.

@@ -63,15 +63,36 @@ concept chart_element = requires {
   { T::iecoop_sfc_element } -> std::convertible_to<element_kind>;
 } && (T::iecoop_sfc_element == element_kind::step || T::iecoop_sfc_element == element_kind::transition);
 
+/// The engine a chart asks for: none (the default of the build), general or compiled.
+enum class engine_choice : std::uint8_t { unset, general, compiled };
+template <class E>
+inline constexpr engine_choice engine_of = engine_choice::unset;
+template <>
+inline constexpr engine_choice engine_of<general_engine> = engine_choice::general;
+template <>
+inline constexpr engine_choice engine_of<compiled_engine> = engine_choice::compiled;
+template <class E>
+concept engine_tag = engine_of<E> != engine_choice::unset;
+
+/// A chart's arguments after the POU: [scan order] [engine] elements.
 template <class... Es>
 struct split_order {
   using order = codesys;
+  static constexpr engine_choice engine = engine_choice::unset;
   using elements = type_list<Es...>;
 };
 template <ScanOrder O, class... Es>
-struct split_order<O, Es...> {
+struct split_order<O, Es...> : split_order<Es...> {
   using order = O;
-  using elements = type_list<Es...>;
+};
+template <engine_tag E, class... Es>
+struct split_order<E, Es...> : split_order<Es...> {
+  static constexpr engine_choice engine = engine_of<E>;
+};
+template <ScanOrder O, engine_tag E, class... Es>
+struct split_order<O, E, Es...> : split_order<Es...> {
+  using order = O;
+  static constexpr engine_choice engine = engine_of<E>;
 };
 
 template <std::size_t I, class List>
