@@ -294,8 +294,9 @@ class chart {
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
     // No flag set (the usual scan): one test for all of them.
-    if (started_ && !(bool(SFCInit) | bool(SFCReset) | bool(SFCQuitError) | quit_held_ | bool(SFCPause) | bool(SFCTip) |
-                      tip_previous_)) [[likely]] {
+    const auto raised = [](bool flag) { return static_cast<unsigned>(flag); };  // | of unsigned, not of bool
+    if (started_ && (raised(SFCInit) | raised(SFCReset) | raised(SFCQuitError) | raised(quit_held_) | raised(SFCPause) |
+                     raised(SFCTip) | raised(tip_previous_)) == 0U) [[likely]] {
       const TIME elapsed = TIME(now - last_);
       last_ = now;
       detail::engine_access::ref(SFCTrans) = FALSE;
