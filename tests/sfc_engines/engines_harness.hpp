@@ -178,10 +178,10 @@ struct batch {
     if (decltype(FB<sfc::codesys, sfc::compiled_engine>::chart)::runs_compiled()) ++compiled;
     const std::uint64_t stimuli_seed = seed * 7919U + static_cast<std::uint64_t>(charts);
     const run_result codesys = compare_engines<FB, sfc::codesys>(stimuli_seed, count);
-    INFO(name, " in the codesys order, ", codesys.difference);
+    INFO(std::string(name), " in the codesys order, ", codesys.difference);
     CHECK(codesys.difference.empty());
     const run_result matiec = compare_engines<FB, sfc::matiec>(stimuli_seed + 1, count);
-    INFO(name, " in the matiec order, ", matiec.difference);
+    INFO(std::string(name), " in the matiec order, ", matiec.difference);
     CHECK(matiec.difference.empty());
     scans += codesys.scans + matiec.scans;
   }

@@ -963,10 +963,11 @@ class chart {
   // the transitions to test, in their order, and the bodies of the actions, in their order, with
   // an action qualified N only called in the states where one of its steps is active. A scan is
   // one call through a table of those functions; a state that fired a transition knows the
-  // state it leads to. The actions that are not N only, and every action's control where a
-  // step changed, go through the general code (control_of; an N-only action's control is a
-  // test of its steps). The state lives beside the general engine's bit sets, which are kept
-  // as before: both engines compute the same, scan for scan (tests/unit/sfc_engines_test.cpp).
+  // state it leads to. The bodies of the other actions are tested on their Q; the controls,
+  // where a step changed, go through the general code's tables (control_n: for an action
+  // qualified N and L alone, a test of its steps and their times; else control_of). The state
+  // lives beside the general engine's bit sets, which are kept as before: both engines compute
+  // the same, scan for scan (tests/sfc_engines, tests/unit/sfc_engines_test.cpp).
   static constexpr std::size_t max_states = 64;
   static constexpr std::uint8_t no_state = 0xFF;
 
@@ -1093,56 +1094,88 @@ class chart {
     each_of<steps_in<M>>(std::forward<F>(f));
   }
 
-  // Whether the action of rank K is associated with its steps by N alone, and with which steps.
+  // Whether the action of rank K is associated with its steps by N alone (only), by N and L
+  // alone (simple), and with which steps by N.
+  struct association_kinds {
+    bool only = true;
+    bool simple = true;
+    step_set with{};
+  };
   template <std::size_t I, std::size_t A>
-  static constexpr void n_associations_of(bool& only, step_set& with) {
-    []<class... It>(detail::type_list<It...>, bool& o, step_set& w) {
+  static constexpr void n_associations_of(association_kinds& k) {
+    []<class... It>(detail::type_list<It...>, association_kinds& r) {
       (
           [&] {
             if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
               if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
                 if constexpr (It::kind == qualifier::N) {
-                  detail::set_bit<step_count>(w, I);
+                  detail::set_bit<step_count>(r.with, I);
                 } else {
-                  o = false;
+                  r.only = false;
+                  r.simple = r.simple && It::kind == qualifier::L;
                 }
               }
             }
           }(),
           ...);
-    }(typename step_at<I>::items{}, only, with);
+    }(typename step_at<I>::items{}, k);
   }
   template <std::size_t K>
   struct n_action {
-    static constexpr std::pair<bool, step_set> found = [] {
-      bool only = true;
-      step_set with{};
+    static constexpr association_kinds found = [] {
+      association_kinds k{};
       [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (n_associations_of<I, action_order[K]>(only, with), ...);
+        (n_associations_of<I, action_order[K]>(k), ...);
       }(std::make_index_sequence<step_count>{});
-      return std::pair<bool, step_set>{only, with};
+      return k;
     }();
-    static constexpr bool only = found.first;
-    static constexpr step_set steps = found.second;
+    static constexpr bool only = found.only;
+    static constexpr bool simple = found.simple;
+    static constexpr step_set steps = found.with;
   };
 
-  // An action qualified N alone: Q is TRUE while one of its steps is active; a final scan when
-  // it falls (codesys). What control_of computes for it, without gathering its inputs.
+  // Q of a simple action (N and L only): one of its N steps active, or one of its L steps active
+  // for less than its duration.
+  template <std::size_t K>
+  static bool simple_q(POU& pou) {
+    constexpr std::size_t A = action_order[K];
+    bool q = false;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (
+          [&] {
+            constexpr std::size_t step = I;
+            []<class... It>(detail::type_list<It...>, POU& p, bool& r) {
+              (
+                  [&] {
+                    if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                      if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
+                        if constexpr (It::kind == qualifier::N) {
+                          r = r || bool(X<step>(p));
+                        } else if constexpr (It::kind == qualifier::L) {
+                          r = r || (bool(X<step>(p)) && T<step>(p) < It::duration);
+                        }
+                      }
+                    }
+                  }(),
+                  ...);
+            }(typename step_at<I>::items{}, pou, q);
+          }(),
+          ...);
+    }(std::make_index_sequence<step_count>{});
+    return q;
+  }
+
+  // An action qualified N and L alone: Q is TRUE while one of its N steps is active or one of
+  // its L steps is active for less than the duration; a final scan when it falls (codesys). What
+  // control_of computes for it, without gathering its inputs.
   struct control_n {
     template <std::size_t K>
     static void call(chart& c, POU& pou, TIME elapsed) {
-      if constexpr (!n_action<K>::only) {
+      if constexpr (!n_action<K>::simple) {
         control_of::template call<K>(c, pou, elapsed);
       } else {
         constexpr std::size_t A = action_order[K];
-        bool q = false;
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-          (
-              [&] {
-                if constexpr (detail::test_bit<step_count>(n_action<K>::steps, I)) q = q || bool(X<I>(pou));
-              }(),
-              ...);
-        }(std::make_index_sequence<step_count>{});
+        const bool q = simple_q<K>(pou);
         detail::control& s = c.controls_[A];
         const bool final_scan = order::actions_first && s.q && !q;
         s.q = q;
@@ -1315,6 +1348,10 @@ class chart {
         for (std::uint64_t m = deactivated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
           detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).X) = FALSE;
         }
+        // A step one transition entered and a later one left (several fired): its time restarts.
+        for (std::uint64_t m = activated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
+          detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).T) = TIME{};
+        }
       }
       each_step_in<M>([&](auto i) {
         constexpr std::size_t I = decltype(i)::value;
@@ -1391,6 +1428,24 @@ class chart {
     }
   }
 
+  // codesys: the state after a scan in which several transitions fired (rare, so apart): the
+  // steps active now are those whose _X says so (a step one transition entered and a later one
+  // left is not).
+  [[gnu::noinline, gnu::cold]] std::uint8_t state_after_several(POU& pou) const {
+    step_set now = active_;
+    for (std::size_t w = 0; w < now.size(); ++w) {
+      for (std::uint64_t m = activated_[w] | deactivated_[w]; m != 0; m &= m - 1) {
+        const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(m));
+        if ((pou.*members[i]).X_next()) {
+          detail::set_bit<step_count>(now, i);
+        } else {
+          detail::clear_bit<step_count>(now, i);
+        }
+      }
+    }
+    return state_of(now);
+  }
+
   void scan_compiled(POU& pou, TIME elapsed, bool tip) {
     if constexpr (order::actions_first) {
       activated_ = entered_;
@@ -1399,11 +1454,7 @@ class chart {
       const bool changed = detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_);
       if (changed) {
         state_ = next_state_;
-        if (state_ == no_state) {
-          step_set now{};
-          for (std::size_t w = 0; w < now.size(); ++w) now[w] = (active_[w] & ~deactivated_[w]) | activated_[w];
-          state_ = state_of(now);
-        }
+        if (state_ == no_state) state_ = state_after_several(pou);
       }
       if (state_ == no_state) {  // (a set of steps the compile-time search did not find: none is known)
         scan_codesys_rest(pou, elapsed, tip);
