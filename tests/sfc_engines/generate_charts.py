@@ -106,13 +106,8 @@ class Chart:
             for _ in range(r.choice([0, 1, 1, 2, 2, 3])):
                 q = r.choice(QUALIFIERS)
                 target = r.choice(self.actions + self.bools)
-                if target in self.bools:
-                    ref = f"&P::{target}"
-                else:
-                    ref = f"&P::{target}"
-                    self.used_actions.add(target)
-                if target in self.bools:
-                    self.used_actions.add(target)
+                ref = f"&P::{target}"
+                self.used_actions.add(target)
                 if q in TIMED:
                     self.items[s].append(f"sfc::{q}<{ref}, \"T#{r.choice([10, 20, 30, 40, 60])}ms\">")
                 else:

@@ -605,7 +605,12 @@ class chart {
     detail::for_each_bit<step_count>(deactivated_, exit_table, *this, pou, elapsed);
     detail::for_each_bit<step_count>(activated_, entry_table, *this, pou, elapsed);
     detail::for_each_bit<step_count>(active_, active_table, *this, pou, elapsed);
-    for (std::size_t v = 0; v < activated_.size(); ++v) {  // the controls of the changed steps' actions
+    mark_changed_steps_actions();
+  }
+
+  // The controls of the actions of the steps activated or deactivated in this scan are computed.
+  void mark_changed_steps_actions() noexcept {
+    for (std::size_t v = 0; v < activated_.size(); ++v) {
       for (std::uint64_t m = activated_[v] | deactivated_[v]; m != 0; m &= m - 1) {
         const action_set& mask = step_action_mask[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
         for (std::size_t w = 0; w < dirty_.size(); ++w) dirty_[w] |= mask[w];
@@ -971,14 +976,30 @@ class chart {
   static constexpr std::size_t max_states = 64;
   static constexpr std::uint8_t no_state = 0xFF;
 
-  template <std::size_t Tr>
-  static constexpr step_set targets = [] {
-    step_set result{};
-    for (const std::size_t s : ends<transition_at<Tr>>::to) {
-      if (s != detail::npos) detail::set_bit<step_count>(result, s);
-    }
-    return result;
-  }();
+  // Each transition's sources, targets, first source step and whether its steps are all in the
+  // chart, as arrays (for the loops of the searches below).
+  static constexpr std::array<step_set, transition_count> all_sources =
+      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+        return std::array<step_set, transition_count>{sources<Tr>...};
+      }(std::make_index_sequence<transition_count>{});
+  static constexpr std::array<step_set, transition_count> all_targets =
+      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+        const auto targets = []<class Tr_>() {
+          step_set result{};
+          for (const std::size_t s : ends<Tr_>::to) {
+            if (s != detail::npos) detail::set_bit<step_count>(result, s);
+          }
+          return result;
+        };
+        return std::array<step_set, transition_count>{targets.template operator()<transition_at<Tr>>()...};
+      }(std::make_index_sequence<transition_count>{});
+  static constexpr std::array<std::size_t, transition_count> all_homes =
+      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+        return std::array<std::size_t, transition_count>{home<Tr>...};
+      }(std::make_index_sequence<transition_count>{});
+  static constexpr std::array<bool, transition_count> all_valid = []<std::size_t... Tr>(std::index_sequence<Tr...>) {
+    return std::array<bool, transition_count>{ends_valid<Tr>...};
+  }(std::make_index_sequence<transition_count>{});
   static constexpr bool subset(const step_set& a, const step_set& b) noexcept {
     for (std::size_t w = 0; w < a.size(); ++w) {
       if ((a[w] & ~b[w]) != 0) return false;
@@ -1009,25 +1030,18 @@ class chart {
     t.sets[0] = start;
     t.count = 1;
     for (std::size_t i = 0; i < t.count && t.complete; ++i) {
-      const step_set m = t.sets[i];
-      [&]<std::size_t... Tr>(std::index_sequence<Tr...>) {
-        (
-            [&] {
-              if constexpr (ends_valid<Tr>) {
-                if (!t.complete || !subset(sources<Tr>, m)) return;
-                const step_set next = after(m, sources<Tr>, targets<Tr>);
-                for (std::size_t k = 0; k < t.count; ++k) {
-                  if (t.sets[k] == next) return;
-                }
-                if (t.count == max_states) {
-                  t.complete = false;
-                  return;
-                }
-                t.sets[t.count++] = next;
-              }
-            }(),
-            ...);
-      }(std::make_index_sequence<transition_count>{});
+      for (std::size_t tr = 0; tr < transition_count && t.complete; ++tr) {
+        if (!all_valid[tr] || !subset(all_sources[tr], t.sets[i])) continue;
+        const step_set next = after(t.sets[i], all_sources[tr], all_targets[tr]);
+        bool known = false;
+        for (std::size_t k = 0; k < t.count && !known; ++k) known = t.sets[k] == next;
+        if (known) continue;
+        if (t.count == max_states) {
+          t.complete = false;
+        } else {
+          t.sets[t.count++] = next;
+        }
+      }
     }
     return t;
   }();
@@ -1051,7 +1065,7 @@ class chart {
   // The state transition Tr leads to from state M.
   template <std::size_t M, std::size_t Tr>
   static constexpr std::uint8_t state_after = [] {
-    const step_set next = after(states.sets[M], sources<Tr>, targets<Tr>);
+    const step_set next = after(states.sets[M], all_sources[Tr], all_targets[Tr]);
     for (std::size_t k = 0; k < state_count; ++k) {
       if (states.sets[k] == next) return static_cast<std::uint8_t>(k);
     }
@@ -1220,12 +1234,7 @@ class chart {
     }
     each_step_in<M>([&](auto i) { active_step::template call<decltype(i)::value>(*this, pou, elapsed); });
     if (changed) {
-      for (std::size_t v = 0; v < activated_.size(); ++v) {  // the controls of the changed steps' actions
-        for (std::uint64_t m = activated_[v] | deactivated_[v]; m != 0; m &= m - 1) {
-          const action_set& mask = step_action_mask[v * 64 + static_cast<std::size_t>(std::countr_zero(m))];
-          for (std::size_t w = 0; w < dirty_.size(); ++w) dirty_[w] |= mask[w];
-        }
-      }
+      mark_changed_steps_actions();
     }
   }
 
@@ -1278,19 +1287,6 @@ class chart {
       });
     }
   }
-
-  // Each transition's sources and whether its steps are all in the chart, as arrays.
-  static constexpr std::array<step_set, transition_count> all_sources =
-      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
-        return std::array<step_set, transition_count>{sources<Tr>...};
-      }(std::make_index_sequence<transition_count>{});
-  static constexpr std::array<std::size_t, transition_count> all_homes =
-      []<std::size_t... Tr>(std::index_sequence<Tr...>) {
-        return std::array<std::size_t, transition_count>{home<Tr>...};
-      }(std::make_index_sequence<transition_count>{});
-  static constexpr std::array<bool, transition_count> all_valid = []<std::size_t... Tr>(std::index_sequence<Tr...>) {
-    return std::array<bool, transition_count>{ends_valid<Tr>...};
-  }(std::make_index_sequence<transition_count>{});
 
   // The transitions state M tests, in the order fire() tests them (by step, else by priority).
   template <std::size_t M>
@@ -1448,10 +1444,7 @@ class chart {
 
   void scan_compiled(POU& pou, TIME elapsed, bool tip) {
     if constexpr (order::actions_first) {
-      activated_ = entered_;
-      deactivated_ = left_;
-      entered_ = left_ = step_set{};
-      const bool changed = detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_);
+      const bool changed = take_step_events();
       if (changed) {
         state_ = next_state_;
         if (state_ == no_state) state_ = state_after_several(pou);
@@ -1463,9 +1456,7 @@ class chart {
         state_functions<>::scans[state_](*this, pou, elapsed, tip, changed);
       }
     } else {
-      activated_ = entered_;  // only a reset leaves an activation pending
-      deactivated_ = step_set{};
-      entered_ = left_ = step_set{};
+      take_step_events();
       if (state_ == no_state) {
         scan_matiec_rest(pou, elapsed, tip);
       } else {
@@ -1475,10 +1466,22 @@ class chart {
   }
 
   // --- The scan ---------------------------------------------------------------------------
-  void scan_codesys(POU& pou, TIME elapsed, bool tip) {
+  // A scan starts: the steps the last scan's transitions entered and left are this scan's
+  // activations and deactivations (codesys; in the matiec order they took effect in that scan,
+  // and only a reset leaves an activation pending). Whether a step changed.
+  bool take_step_events() noexcept {
     activated_ = entered_;
-    deactivated_ = left_;
+    if constexpr (order::actions_first) {
+      deactivated_ = left_;
+    } else {
+      deactivated_ = step_set{};
+    }
     entered_ = left_ = step_set{};
+    return detail::any<step_count>(activated_) || detail::any<step_count>(deactivated_);
+  }
+
+  void scan_codesys(POU& pou, TIME elapsed, bool tip) {
+    take_step_events();
     scan_codesys_rest(pou, elapsed, tip);
   }
 
@@ -1500,9 +1503,7 @@ class chart {
   }
 
   void scan_matiec(POU& pou, TIME elapsed, bool tip) {
-    activated_ = entered_;  // only a reset leaves an activation pending
-    deactivated_ = step_set{};
-    entered_ = left_ = step_set{};
+    take_step_events();
     scan_matiec_rest(pou, elapsed, tip);
   }
 
