@@ -1,5 +1,5 @@
 #!/bin/sh
-# Builds the firmware examples for Cortex-M3 and Cortex-M4F (the CMake presets) and writes
+# Builds the firmware examples for the six Cortex-M cores (the CMake presets) and writes
 # their sizes into docs/embedded.md, between the size-table markers. Run it after a change
 # that may change the sizes, and commit docs/embedded.md.
 #
@@ -13,7 +13,7 @@ iecoop_require_packages cmake gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc+
 
 doc=docs/embedded.md
 examples="i_math_interface property_and_method timers_counters scheduler trace sfc_station fault"
-cores="cortex-m3 cortex-m4f"
+cores="cortex-m0plus cortex-m3 cortex-m4f cortex-m7 cortex-m33 cortex-m55"
 
 for core in $cores; do
   cmake --preset "$core" >/dev/null

@@ -14,9 +14,10 @@
 # header on its own with -fno-exceptions -fno-rtti.
 #   3. the data exchange's tests (Modbus, MQTT, against real peers) once more under clang++ with
 #      ThreadSanitizer (docs/exchange.md),
-#   4. the firmware examples for Cortex-M3 and Cortex-M4F (CMake presets cortex-m3 and
-#      cortex-m4f), run under QEMU, and the check that they link no heap, exceptions or RTTI
-#      (CTest label `embedded`; see docs/embedded.md).
+#   4. the firmware examples for six Cortex-M cores (CMake presets cortex-m0plus, cortex-m3,
+#      cortex-m4f, cortex-m7, cortex-m33, cortex-m55), each run under QEMU on a board that has
+#      the core, and the check that they link no heap, exceptions or RTTI (CTest label
+#      `embedded`; see docs/embedded.md).
 # Installs the Debian packages it needs first, the cross toolchain and QEMU included; if they
 # cannot be installed, it fails. Builds and tests run CMAKE_BUILD_PARALLEL_LEVEL jobs at once
 # where it is set (a shared machine), else one per core.
@@ -131,6 +132,7 @@ cmake --build build/exchange-tsan -j "$jobs" --target iecoop_exchange_tests
 TSAN_OPTIONS="halt_on_error=1 detect_deadlocks=0" ctest --test-dir build/exchange-tsan -j "$jobs" --output-on-failure -L exchange
 elapsed "exchange-tsan tests"
 
-firmware cortex-m3
-firmware cortex-m4f
+for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
+  firmware "$core"
+done
 echo "== iecoop: all tests passed"
