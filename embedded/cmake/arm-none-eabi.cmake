@@ -75,3 +75,4 @@ set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 
 # The binutils the tests and embedded/size_table.sh use on the images.
 find_program(IECOOP_ARM_NM arm-none-eabi-nm REQUIRED)
+find_program(IECOOP_ARM_OBJDUMP arm-none-eabi-objdump REQUIRED)

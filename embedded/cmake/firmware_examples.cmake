@@ -2,7 +2,8 @@
 # output) and the exit status each ends with: 0, but `fault`, which ends in its fault handler.
 # Read by embedded/CMakeLists.txt (the images, run under QEMU) and by examples/CMakeLists.txt
 # (the same sources built for the host).
-set(IECOOP_FIRMWARE_EXAMPLES i_math_interface property_and_method timers_counters scheduler trace sfc_station fault)
+set(IECOOP_FIRMWARE_EXAMPLES i_math_interface property_and_method timers_counters scheduler trace sfc_station process_image
+                             fault)
 foreach(example IN LISTS IECOOP_FIRMWARE_EXAMPLES)
   set(IECOOP_FIRMWARE_STATUS_${example} 0)
 endforeach()

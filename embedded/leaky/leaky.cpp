@@ -1,13 +1,15 @@
 // A deliberately bad firmware, built only to prove that check_symbols.cmake fails on an image
 // that links what iecoop's firmware must not: compiled once per kind of leak, with
 // LEAKY_HEAP (malloc), LEAKY_NEW (operator new), LEAKY_THROW (a throw, with -fexceptions) or
-// LEAKY_RTTI (typeid, with -frtti). It never runs.
+// LEAKY_RTTI (typeid, with -frtti); and once, LEAKY_DIVISION, to prove that
+// check_divisions.cmake fails on an image whose code divides 64-bit integers. It never runs.
 //
 // The firmware is linked without a system-call layer and, with the slim package set, without
 // libsupc++: so the heap images bring their own _sbrk (as a firmware with a heap would), and
 // the throw and RTTI images are linked with their runtime references left unresolved, which
 // is enough for the symbol table to show them.
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <typeinfo>
 
@@ -46,8 +48,17 @@ square a_square;
 shape* volatile some_shape = &a_square;
 #endif
 
+#if defined(LEAKY_DIVISION)
+volatile std::uint64_t dividend = 1000000000000ULL;
+volatile std::uint64_t divisor = 7;
+// What a program's body must not do on a 32-bit core: a 64-bit division by a run-time value.
+[[gnu::noinline]] std::uint64_t cycle_body() { return dividend / divisor; }
+#endif
+
 int main() {
-#if defined(LEAKY_HEAP)
+#if defined(LEAKY_DIVISION)
+  sink = static_cast<int>(cycle_body());
+#elif defined(LEAKY_HEAP)
   void* block = std::malloc(16);
   sink = block != nullptr ? 1 : 0;
   std::free(block);

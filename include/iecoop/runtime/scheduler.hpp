@@ -362,16 +362,21 @@ class scheduler {
       release(index_of(t), t.next_release_);
       if (t.settings_.kind == task_kind::cyclic) {
         t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval);
-        if (t.next_release_ <= now_) {  // releases missed while late: omitted
-          const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
-          t.record_overruns(missed);
-          t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
-        }
+        if (t.next_release_ <= now_) skip_missed_releases(t);
       } else {
         t.next_release_ = LTIME::max();  // freewheeling: released again when the cycle ends
       }
     }
     sample_events();
+  }
+
+  // Releases missed while late are omitted (counted as overruns). Apart, and not inlined: the
+  // only 64-bit division of a cyclic task's release, which a 32-bit core makes in software
+  // (docs/embedded.md, "64-bit divisions").
+  [[gnu::noinline, gnu::cold]] void skip_missed_releases(task_state& t) noexcept {
+    const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
+    t.record_overruns(missed);
+    t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
   }
 
   // The clock moves forward to t > now_; the cycle left running uses up the time passed.
@@ -416,7 +421,9 @@ class scheduler {
     }
   }
 
-  [[nodiscard]] LTIME freewheeling_pause(LTIME cycle_time) const noexcept {
+  // Not inlined: its divisions by the load are 64-bit, which a 32-bit core makes in software,
+  // and only a freewheeling task's cycle needs them (docs/embedded.md, "64-bit divisions").
+  [[gnu::noinline]] [[nodiscard]] LTIME freewheeling_pause(LTIME cycle_time) const noexcept {
     std::uint64_t freewheeling_tasks = 0;
     for (const task_state& t : tasks_) freewheeling_tasks += t.settings_.kind == task_kind::freewheeling ? 1 : 0;
     const std::uint64_t max_load = freewheeling_load_ < 100 ? freewheeling_load_ : 100;

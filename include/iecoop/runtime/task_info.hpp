@@ -24,6 +24,7 @@
 #include <cstdint>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/runtime/task.hpp>
 #include <iecoop/types/elementary.hpp>
@@ -174,7 +175,7 @@ struct PlcTaskSystemInfo {
 namespace detail {
 // A duration in TwinCAT's UDINT multiples of 100 ns, stopping at 16#FFFFFFFF.
 [[nodiscard]] constexpr UDINT hundreds_of_ns(LTIME t) noexcept {
-  const std::uint64_t n = t.count() / 100U;
+  const std::uint64_t n = divide_by<100>(t.count());  // no 64-bit division on a 32-bit core
   return UDINT(static_cast<std::uint32_t>(n > 0xFFFFFFFFU ? 0xFFFFFFFFU : n));
 }
 }  // namespace detail

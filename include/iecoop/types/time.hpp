@@ -19,6 +19,7 @@
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/chrono.hpp>  // std::chrono's durations and clocks
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/iec_value.hpp>
 #include <iecoop/detail/scalar_access.hpp>
@@ -180,7 +181,9 @@ class basic_time {
   template <class P>
   static constexpr std::uint64_t scale(std::uint64_t ticks) noexcept {
     using ratio = std::ratio_divide<P, Period>;
-    return ticks * static_cast<std::uint64_t>(ratio::num) / static_cast<std::uint64_t>(ratio::den);
+    // To a coarser unit (LTIME to TIME: the cycle clock, every task cycle) without a 64-bit
+    // division on a 32-bit core (detail/constant_division.hpp).
+    return detail::divide_by<static_cast<std::uint64_t>(ratio::den)>(ticks * static_cast<std::uint64_t>(ratio::num));
   }
 
   template <class N>
