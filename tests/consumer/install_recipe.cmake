@@ -25,7 +25,8 @@ step(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${build} -G ${GENERATOR} -DCMAKE_CXX_C
      -DCMAKE_BUILD_TYPE=Release ${hide})
 step(${CMAKE_COMMAND} --install ${build} --prefix ${prefix})
 foreach(file include/iecoop/iecoop.hpp include/iecoop/runtime/scheduler.hpp share/cmake/iecoop/iecoopConfig.cmake
-             share/pkgconfig/iecoop.pc)
+             share/pkgconfig/iecoop.pc share/cmake/iecoop/firmware/cmake/arm-none-eabi.cmake
+             share/cmake/iecoop/firmware/template/CMakeLists.txt)
   if(NOT EXISTS ${prefix}/${file})
     message(FATAL_ERROR "install_recipe: ${file} was not installed under ${prefix}")
   endif()

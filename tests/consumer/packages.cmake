@@ -57,7 +57,8 @@ foreach(header IN LISTS headers)
 endforeach()
 foreach(file share/cmake/iecoop/iecoopConfig.cmake share/cmake/iecoop/iecoopConfigVersion.cmake
              share/cmake/iecoop/iecoopTargets.cmake share/pkgconfig/iecoop.pc share/doc/iecoop/LICENSE
-             share/doc/iecoop/CHANGELOG.md)
+             share/doc/iecoop/CHANGELOG.md share/cmake/iecoop/firmware/cmake/iecoop_firmware.cmake
+             share/cmake/iecoop/firmware/boards/microbit/memory.ld)
   if(NOT EXISTS ${root}/${file})
     message(FATAL_ERROR "packages: the ${KIND} package lacks ${file}")
   endif()
