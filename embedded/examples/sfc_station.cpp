@@ -20,6 +20,7 @@
 #include "console.hpp"
 #include "exit_status.hpp"
 #include "fault_handler.hpp"
+#include "scan_cost.hpp"
 
 namespace {
 
@@ -103,6 +104,7 @@ struct on_count {
 
 int main() {
   firmware::install_fault_handler();
+  firmware::scan_cost::start();  // only a build with IECOOP_FIRMWARE_SCAN_COST measures (scan_cost.hpp)
   using chart_type = decltype(station.chart);
   constexpr auto members = chart_type::step_members();
   constexpr auto names = chart_type::step_names();
@@ -117,7 +119,9 @@ int main() {
     station.START = (t >= 100 && t < 150) || (t >= 3000 && t < 3050);
     station.LEVEL = INT(static_cast<std::int16_t>(plant.level));
     station.TEMP = INT(static_cast<std::int16_t>(plant.temp));
+    firmware::scan_cost::begin();
     station();
+    firmware::scan_cost::end();
     plant.step(station);
     heater.record(station.HEATER);
     boost.record(station.BOOST);
@@ -145,6 +149,7 @@ int main() {
   const bool ok = batches == 2 && entries == 11 && last_entry == 4220 && boost.cycles == 20 && heater.cycles == 62 &&
                   mixer.cycles == 206 && station.nHeatLog == 64 && station.tHeated == "T#300ms"_iec && !station.MIXER &&
                   station.IDLE.X;
+  firmware::scan_cost::report("sfc_station");
   firmware::print_line("RESULT sfc_station ", ok ? "PASS" : "FAIL");
   return ok ? firmware::exit_status::passed : firmware::exit_status::failed;
 }

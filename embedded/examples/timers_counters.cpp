@@ -10,6 +10,7 @@
 #include "console.hpp"
 #include "exit_status.hpp"
 #include "fault_handler.hpp"
+#include "scan_cost.hpp"
 
 namespace {
 
@@ -59,6 +60,7 @@ struct edge_times {
 
 int main() {
   firmware::install_fault_handler();
+  firmware::scan_cost::start();  // only a build with IECOOP_FIRMWARE_SCAN_COST measures (scan_cost.hpp)
   edge_times on_delay, off_delay, pulse, up, down, up_down_q;
   for (long t = 0; t <= 1500; t += 10) {
     const BOOL on_before = plc_prg.tOnDelay.Q, off_before = plc_prg.tOffDelay.Q, pulse_before = plc_prg.tPulse.Q;
@@ -67,7 +69,9 @@ int main() {
     cycle_clock::set(LTIME::from_ticks(static_cast<std::uint64_t>(t) * 1000000U));  // ms in ns
     plc_prg.bSwitch = t >= 100 && t < 800;
     plc_prg.bClock = (t / 20) % 2 == 1;
+    firmware::scan_cost::begin();
     plc_prg();
+    firmware::scan_cost::end();
     on_delay.record(on_before, plc_prg.tOnDelay.Q, t);
     off_delay.record(off_before, plc_prg.tOffDelay.Q, t);
     pulse.record(pulse_before, plc_prg.tPulse.Q, t);
@@ -89,6 +93,7 @@ int main() {
                   && up.rose == 460 && up.fell == 800                 // 10th edge after 100 ms; RESET
                   && down.rose == 260 && down.fell == 800             // 5 edges from 5 to 0; LOAD
                   && up_down_q.rose == 540 && up_down_cv == 0;        // 12th edge up; then counted down
+  firmware::scan_cost::report("timers_counters");
   firmware::print_line("RESULT timers_counters ", ok ? "PASS" : "FAIL");
   return ok ? firmware::exit_status::passed : firmware::exit_status::failed;
 }
