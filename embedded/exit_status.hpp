@@ -3,7 +3,15 @@
 #pragma once
 
 #if defined(__arm__)
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
 #include "semihosting.hpp"
+
+// The stack's bounds, from the linker script (embedded/cortex-m.ld).
+extern "C" std::uint32_t __stack_bottom[];
+extern "C" std::uint32_t __stack_top[];
 #else
 #include <cstdlib>
 #endif
@@ -18,9 +26,46 @@ enum exit_status : int {
   cpu_fault = 3,     ///< a processor exception or abort() (startup.cpp)
 };
 
+#if defined(__arm__) && defined(IECOOP_FIRMWARE_STACK_REPORT)
+/// What the start-up code writes over the stack before main() (startup.cpp), in a build that
+/// reports the stack's high-water mark (the CMake option IECOOP_FIRMWARE_STACK_REPORT, which
+/// embedded/size_table.sh turns on for its own build: the report's 300 bytes of code are not
+/// counted in the examples' sizes).
+inline constexpr std::uint32_t stack_paint = 0xA5C3E187U;
+
+/// The bytes of the stack ever used since reset: from the top down to the deepest word that no
+/// longer holds the paint.
+inline std::uint32_t stack_high_water() noexcept {
+  const std::uint32_t* word = __stack_bottom;
+  while (word < __stack_top && *word == stack_paint) ++word;
+  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_top) -
+                                    reinterpret_cast<std::uintptr_t>(word));
+}
+
+/// Writes `stack high-water: <bytes> bytes` to the host's stderr (embedded/size_table.sh reads
+/// it; the tests compare stdout only).
+inline void report_stack_high_water() noexcept {
+  char text[40] = "stack high-water: ";
+  std::size_t n = 18;
+  char digits[10];
+  std::size_t count = 0;
+  std::uint32_t value = stack_high_water();
+  do {
+    digits[count++] = static_cast<char>('0' + value % 10U);
+    value /= 10U;
+  } while (value != 0);
+  while (count > 0) text[n++] = digits[--count];
+  for (const char c : " bytes\n") text[n++] = c;
+  semihosting::write_stderr(std::string_view(text, n - 1));  // without the array's final '\0'
+}
+#endif
+
 /// Ends the program with `status`.
 [[noreturn]] inline void end(int status) noexcept {
 #if defined(__arm__)
+#if defined(IECOOP_FIRMWARE_STACK_REPORT)
+  report_stack_high_water();
+#endif
   semihosting::exit(status);
 #else
   std::exit(status);

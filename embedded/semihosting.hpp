@@ -51,6 +51,17 @@ inline void write(std::string_view text) noexcept {
   request(op_write, block);
 }
 
+/// Writes `text` to the host's stderr: ":tt" opened for appending (mode 8, "a").
+inline void write_stderr(std::string_view text) noexcept {
+  static constexpr char name[] = ":tt";
+  static const std::uint32_t handle = [] {
+    const std::uint32_t block[3] = {address_of(name), 8U, sizeof name - 1};
+    return request(op_open, block);
+  }();
+  const std::uint32_t block[3] = {handle, address_of(text.data()), static_cast<std::uint32_t>(text.size())};
+  request(op_write, block);
+}
+
 /// Ends the program; QEMU exits with `status`. SYS_EXIT proper cannot carry a status on
 /// 32-bit ARM (the host sees 0 or 1), its extended form can.
 [[noreturn]] inline void exit(int status) noexcept {

@@ -17,6 +17,7 @@ extern std::uint32_t __data_start[];
 extern std::uint32_t __data_end[];
 extern std::uint32_t __bss_start[];
 extern std::uint32_t __bss_end[];
+extern std::uint32_t __stack_bottom[];
 extern std::uint32_t __stack_top[];
 extern void (*__init_array_start[])();
 extern void (*__init_array_end[])();
@@ -28,6 +29,13 @@ extern "C" int firmware_main() __asm__("main");
 namespace {
 
 [[noreturn]] void stop_on_cpu_fault(const char* what) noexcept {
+#if !defined(__ARM_ARCH_6M__)
+  // The report's own code may load a word from an unaligned address, as ARMv7-M and ARMv8-M
+  // allow: where a firmware set CCR.UNALIGN_TRP (embedded/traps/unaligned.cpp), clear it, or
+  // the report would fault inside the fault handler and lock the core up.
+  auto* const ccr = reinterpret_cast<volatile std::uint32_t*>(0xE000ED14U);
+  *ccr = *ccr & ~(1U << 3);
+#endif
   firmware::print_line("cpu fault: ", what);
   firmware::end(firmware::exit_status::cpu_fault);
 }
@@ -117,6 +125,13 @@ extern "C" [[noreturn]] void iecoop_reset() noexcept {
   auto* const cpacr = reinterpret_cast<volatile std::uint32_t*>(0xE000ED88U);
   *cpacr = *cpacr | (0xFU << 20);
   asm volatile("dsb\n\tisb" ::: "memory");
+#endif
+#if defined(IECOOP_FIRMWARE_STACK_REPORT)
+  // The stack below this function's frame gets a pattern, so that the end of the program can
+  // tell how deep the stack ever reached (firmware::stack_high_water, exit_status.hpp).
+  std::uint32_t* sp = nullptr;
+  asm volatile("mov %0, sp" : "=r"(sp));
+  for (std::uint32_t* word = __stack_bottom; word < sp - 16; ++word) *word = firmware::stack_paint;
 #endif
   // Initialised variables get their first values from flash; the others start at zero.
   const std::uint32_t* from = __data_load;

@@ -79,6 +79,28 @@ TEST_CASE("constant_division: the reciprocal gives floor(x / D) for every kind o
   CHECK(checked > 14 * 40000);
 }
 
+TEST_CASE("constant_division: the long division gives floor(n / d) for run-time divisors") {
+  std::mt19937_64 random(7);
+  int checked = 0;
+  const auto check = [&](std::uint64_t n, std::uint64_t d) {
+    if (detail::divide_by_steps(n, d) != n / d) FAIL_CHECK("dividend " << n << ", divisor " << d);
+    CHECK(detail::divide_u64(n, d) == n / d);
+    ++checked;
+  };
+  for (std::uint64_t d : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}, std::uint64_t{100}, std::uint64_t{1000000},
+                          std::uint64_t{0xFFFFFFFFU}, std::uint64_t{0x100000000ULL}, (std::uint64_t{1} << 63) + 1, max64}) {
+    for (std::uint64_t n : {std::uint64_t{0}, std::uint64_t{1}, d - 1, d, d + 1, max64 - 1, max64, max64 / 2 + 1}) check(n, d);
+  }
+  for (int i = 0; i < 20000; ++i) {
+    const std::uint64_t n = random();
+    const std::uint64_t d = random() >> (i % 64);
+    if (d != 0) check(n, d);
+  }
+  CHECK(checked > 19000);
+}
+static_assert(detail::divide_by_steps(max64, 3) == max64 / 3);
+static_assert(detail::divide_by_steps(1000, 1001) == 0);
+
 TEST_CASE("constant_division: LTIME to TIME truncates to whole milliseconds and wraps, as before") {
   CHECK(TIME(LTIME::from_ticks(999999)).count() == 0U);
   CHECK(TIME(LTIME::from_ticks(1000000)).count() == 1U);

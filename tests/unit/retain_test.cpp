@@ -306,6 +306,7 @@ TEST_SUITE("retain") {
     // header, two section headers, INT REAL BOOL DINT | TIME STRING(10) DINT ST_Recipe
     CHECK(size == 16 + 16 + 2 + 4 + 1 + 4 + 16 + 4 + 11 + 4 + sizeof(ST_Recipe));
     CHECK(size == detail::retained_image_size(objects, retain_kinds::both));
+    CHECK(size == detail::retained_image_size_needed(objects));  // start()'s check, in one pass
 
     std::destroy_at(&machine);
     std::construct_at(&machine);

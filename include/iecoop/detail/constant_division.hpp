@@ -89,4 +89,36 @@ template <std::uint64_t D>
 #endif
 }
 
+/// floor(n / d), d > 0, by binary long division: 64 steps of a shift and a compare (tested
+/// against `/`: tests/unit/constant_division_test.cpp).
+[[nodiscard]] constexpr std::uint64_t divide_by_steps(std::uint64_t n, std::uint64_t d) noexcept {
+  std::uint64_t quotient = 0;
+  std::uint64_t remainder = 0;
+  for (int bit = 63; bit >= 0; --bit) {
+    const bool carry = (remainder >> 63) != 0;  // remainder x 2 overflows 64 bits
+    remainder = (remainder << 1) | ((n >> bit) & 1U);
+    if (carry || remainder >= d) {
+      remainder -= d;
+      quotient |= std::uint64_t{1} << bit;
+    }
+  }
+  return quotient;
+}
+
+/// floor(n / d) for a divisor known only at run time (d > 0), without libgcc's 64-bit division
+/// routine (700 bytes of flash on a Cortex-M3): the compiler's division on a 64-bit host; on a
+/// 32-bit target one 32-bit division where both fit 32 bits, else divide_by_steps. For the
+/// scheduler's rare paths (the releases a late task missed, a freewheeling task's pause), not
+/// for a loop.
+[[nodiscard]] constexpr std::uint64_t divide_u64(std::uint64_t n, std::uint64_t d) noexcept {
+#if defined(__SIZEOF_INT128__)
+  return n / d;
+#else
+  if ((n >> 32) == 0 && (d >> 32) == 0) {
+    return static_cast<std::uint32_t>(n) / static_cast<std::uint32_t>(d);
+  }
+  return divide_by_steps(n, d);
+#endif
+}
+
 }  // namespace iecoop::detail

@@ -16,10 +16,19 @@ namespace iecoop::detail {
 template <class T>
 inline int listed_by_applications = 0;
 
-/// The fault messages of single_instance<Self, ...>, naming Self and the fix.
+/// The fault messages of single_instance<Self, ...>, naming Self and the fix. Built for size
+/// (-Os: __OPTIMIZE_SIZE__, as a firmware is), each says the rule and the fix in fewer words:
+/// every PROGRAM and list has its own copy of each, 550 bytes of flash a PROGRAM otherwise.
 template <class Self, bool List>
 struct single_instance_messages {
   static constexpr std::string_view name = short_type_name<Self>();
+#if defined(__OPTIMIZE_SIZE__)
+  static constexpr std::string_view unlisted =
+      List ? ": no application lists it; add globals<" : ": no task calls this PROGRAM; name it in a task<";
+  static constexpr std::string_view unlisted_end = "> (a scratch instance stands in)";
+  static constexpr std::string_view not_started = ": used while its application is stopped; start() constructs it";
+  static constexpr std::string_view duplicate = ": a second instance, not registered; the application owns the one";
+#else
   static constexpr std::string_view unlisted =
       List ? ": no application lists this global variable list in globals<...> and no instance of it is declared; "
              "add it to the application, as in application{..., globals<"
@@ -37,6 +46,7 @@ struct single_instance_messages {
              "that lists it in globals<...> owns it: do not declare it too)"
            : ": a PROGRAM has exactly one instance; this second one is not registered (an application whose task "
              "calls it owns it: do not declare it too)";
+#endif
   static constexpr auto unlisted_text = joined_text<name, unlisted, name, unlisted_end>;
   static constexpr auto not_started_text = joined_text<name, not_started>;
   static constexpr auto duplicate_text = joined_text<name, duplicate>;

@@ -591,9 +591,7 @@ class application {
   /// TRUE if the variables' image fits the retain memory; otherwise reports the fault, ends
   /// the instances (FB_Exit) and leaves the application stopped.
   bool retain_fits() {
-    const std::size_t needed = detail::retained_count(store_.objects(), retain_kinds::both) == 0
-                                   ? 0
-                                   : detail::retained_image_size(store_.objects(), retain_kinds::both);
+    const std::size_t needed = detail::retained_image_size_needed(store_.objects());
     retain_bytes_needed_ = needed;
     if (needed <= retain_bytes) return true;
     destroy();

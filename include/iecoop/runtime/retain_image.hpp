@@ -152,6 +152,27 @@ inline std::uint32_t retained_checksum(std::span<const std::byte> bytes) noexcep
   return hash.value();
 }
 
+/// The bytes the image of both kinds of the variables in `objects` takes (retained_image_size
+/// with retain_kinds::both), 0 where none lies in them: one pass over the variables, without
+/// the order and the layout's hash, so that an application without RETAIN variables (the
+/// check that start() makes) links none of the image's code.
+inline std::size_t retained_image_size_needed(std::span<const retained_object> objects) noexcept {
+  std::size_t data = 0;
+  bool any = false;
+  for (const retained_node* node = retained_first; node != nullptr; node = node->next) {
+    const std::uintptr_t at = retained_address(node->value);
+    for (const retained_object& object : objects) {
+      const std::uintptr_t begin = retained_address(object.base);
+      if (at >= begin && at - begin < object.size && object.size - (at - begin) >= node->type->size) {
+        data += node->type->size;
+        any = true;
+        break;
+      }
+    }
+  }
+  return any ? retain_image_header_size + 2 * retain_section_header_size + data : 0;
+}
+
 /// The number of bytes save_retained writes for `kinds` of the variables in `objects`.
 inline std::size_t retained_image_size(std::span<const retained_object> objects, retain_kinds kinds) {
   std::size_t size = retain_image_header_size;

@@ -30,6 +30,7 @@
 #include <string_view>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/detail/ready_queues.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/runtime/cycle_observer.hpp>
@@ -374,7 +375,7 @@ class scheduler {
   // only 64-bit division of a cyclic task's release, which a 32-bit core makes in software
   // (docs/embedded.md, "64-bit divisions").
   [[gnu::noinline, gnu::cold]] void skip_missed_releases(task_state& t) noexcept {
-    const std::uint64_t missed = (now_ - t.next_release_).count() / t.settings_.interval.count() + 1;
+    const std::uint64_t missed = detail::divide_u64((now_ - t.next_release_).count(), t.settings_.interval.count()) + 1;
     t.record_overruns(missed);
     t.next_release_ = detail::add_saturated(t.next_release_, t.settings_.interval * missed);
   }
@@ -429,8 +430,9 @@ class scheduler {
     const std::uint64_t max_load = freewheeling_load_ < 100 ? freewheeling_load_ : 100;
     // L = max_load / 2 / n percent; pause = cycle x (100 - L) / L = cycle x (200 n - max_load) / max_load.
     const std::uint64_t numerator = 200 * freewheeling_tasks - max_load;
-    const LTIME pause = LTIME::from_ticks(cycle_time.count() / max_load * numerator +
-                                          cycle_time.count() % max_load * numerator / max_load);
+    const std::uint64_t whole = detail::divide_u64(cycle_time.count(), max_load);
+    const std::uint64_t rest = cycle_time.count() - whole * max_load;
+    const LTIME pause = LTIME::from_ticks(whole * numerator + detail::divide_u64(rest * numerator, max_load));
     const LTIME minimum = LTIME(TIME(1));
     return pause < minimum ? minimum : pause;
   }

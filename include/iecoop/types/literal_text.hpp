@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/detail/diagnostics.hpp>
 #include <iecoop/detail/parse_result.hpp>
 #include <iecoop/fault.hpp>
@@ -543,8 +544,14 @@ constexpr char* write_unsigned(char* out, U v) noexcept {
   char digits[std::numeric_limits<U>::digits10 + 1];
   std::size_t n = 0;
   do {
-    digits[n++] = static_cast<char>('0' + v % 10U);
-    v = static_cast<U>(v / 10U);
+    U q;
+    if constexpr (sizeof(U) > 4) {
+      q = static_cast<U>(divide_by<10>(v));  // no 64-bit division routine on a 32-bit core
+    } else {
+      q = static_cast<U>(v / 10U);
+    }
+    digits[n++] = static_cast<char>('0' + (v - q * 10U));
+    v = q;
   } while (v != 0);
   while (n > 0) *out++ = digits[--n];
   return out;
