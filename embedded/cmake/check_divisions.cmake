@@ -9,7 +9,8 @@
 # task cycle or as measured there: the scheduler's skip_missed_releases (a cyclic task that
 # fell behind) and freewheeling_pause (a freewheeling task's pause), the text of numbers the
 # examples print at the end (firmware::put, iecoop's to_text and the trace writers), and the
-# division routines themselves. The `leaky_division` image proves the check can fail.
+# division routines themselves. The `leaky_division` image proves the check can fail
+# (expect_check_fails.cmake).
 cmake_minimum_required(VERSION 3.25)
 if(NOT DEFINED OBJDUMP OR NOT DEFINED ELF)
   message(FATAL_ERROR "usage: cmake -DOBJDUMP=<objdump> -DELF=<image> -P check_divisions.cmake")
