@@ -27,10 +27,10 @@ inline volatile std::uint32_t& syst_rvr() { return *reinterpret_cast<volatile st
 inline volatile std::uint32_t& syst_cvr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000E018U); }
 inline std::uint32_t elapsed(std::uint32_t from, std::uint32_t to) { return (from - to) & 0xFFFFFFU; }  // counts down
 
-inline std::uint64_t ticks = 0;      // the scans' ticks
-inline std::uint32_t scans = 0;      // how many
-inline std::uint32_t at_begin = 0;   // the counter at the last begin()
-inline std::uint64_t loop_ticks = 0;        // the calibration loop's
+inline std::uint64_t ticks = 0;              // the scans' ticks
+inline std::uint32_t scans = 0;              // how many
+inline std::uint32_t at_begin = 0;           // the counter at the last begin()
+inline std::uint64_t loop_ticks = 0;         // the calibration loop's
 inline std::uint64_t loop_instructions = 0;  // and its instructions
 inline std::uint64_t empty_ticks = 0;        // 1000 empty begin()/end() pairs
 inline constexpr std::uint32_t empty_pairs = 1000;

@@ -43,17 +43,17 @@ struct IO_PRG : program<IO_PRG> {
   [[no_unique_address]] located<REAL, "%QD15", field_image> rOut;       // rOut AT %QD15 : REAL;
   [[no_unique_address]] located<WORD, "%MW1", field_image> wCycles;     // wCycles AT %MW1 : WORD;
   // END_VAR
-  using LOCATED = pins<&IO_PRG::bEnable, &IO_PRG::byMode, &IO_PRG::iSpeed, &IO_PRG::diCount, &IO_PRG::lwStamp,
-                       &IO_PRG::rGain, &IO_PRG::bOn, &IO_PRG::iReference, &IO_PRG::diPosition, &IO_PRG::lwEcho,
-                       &IO_PRG::rOut, &IO_PRG::wCycles>;
+  using LOCATED =
+      pins<&IO_PRG::bEnable, &IO_PRG::byMode, &IO_PRG::iSpeed, &IO_PRG::diCount, &IO_PRG::lwStamp, &IO_PRG::rGain,
+           &IO_PRG::bOn, &IO_PRG::iReference, &IO_PRG::diPosition, &IO_PRG::lwEcho, &IO_PRG::rOut, &IO_PRG::wCycles>;
 
   void body() {
-    wCycles = wCycles + 1;                               // wCycles := wCycles + 1;
-    bOn = bEnable && byMode == BYTE(2);                  // bOn := bEnable AND byMode = 2;
-    iReference = iSpeed * 2;                             // iReference := iSpeed * 2;
-    diPosition = diCount + 100000;                       // diPosition := diCount + 100000;
-    lwEcho = lwStamp ^ LWORD(0xFF00FF00FF00FF00U);        // lwEcho := lwStamp XOR 16#FF00FF00FF00FF00;
-    rOut = rGain * REAL(2.5F);                           // rOut := rGain * 2.5;
+    wCycles = wCycles + 1;                          // wCycles := wCycles + 1;
+    bOn = bEnable && byMode == BYTE(2);             // bOn := bEnable AND byMode = 2;
+    iReference = iSpeed * 2;                        // iReference := iSpeed * 2;
+    diPosition = diCount + 100000;                  // diPosition := diCount + 100000;
+    lwEcho = lwStamp ^ LWORD(0xFF00FF00FF00FF00U);  // lwEcho := lwStamp XOR 16#FF00FF00FF00FF00;
+    rOut = rGain * REAL(2.5F);                      // rOut := rGain * 2.5;
   }
 };
 
@@ -74,12 +74,12 @@ struct io_field {
 
   void read_inputs(std::span<std::byte> inputs) {
     ++cycle;
-    put_bytes(inputs, 0, 0x01U, 1);                                             // bEnable
-    put_bytes(inputs, 1, 2U, 1);                                                // byMode
-    put_bytes(inputs, 3, static_cast<std::uint16_t>(-1000 + 700 * static_cast<int>(cycle)), 2);  // iSpeed
+    put_bytes(inputs, 0, 0x01U, 1);                                                                   // bEnable
+    put_bytes(inputs, 1, 2U, 1);                                                                      // byMode
+    put_bytes(inputs, 3, static_cast<std::uint16_t>(-1000 + 700 * static_cast<int>(cycle)), 2);       // iSpeed
     put_bytes(inputs, 5, static_cast<std::uint32_t>(-250000 + 100000 * static_cast<int>(cycle)), 4);  // diCount
-    put_bytes(inputs, 9, 0x0123456789ABCDEFULL + cycle, 8);                     // lwStamp
-    put_bytes(inputs, 17, 0x3FC00000U, 4);                                      // rGain: 1.5
+    put_bytes(inputs, 9, 0x0123456789ABCDEFULL + cycle, 8);                                           // lwStamp
+    put_bytes(inputs, 17, 0x3FC00000U, 4);                                                            // rGain: 1.5
   }
   void write_outputs(std::span<const std::byte> image) {
     for (std::size_t i = 0; i < sizeof outputs; ++i) outputs[i] = image[i];
@@ -120,14 +120,14 @@ int main() {
   if (!registers || !coils) firmware::end(firmware::failed);
   std::uint32_t sum = 0;
   for (std::uint32_t r = 0; r < 4; ++r) sum += load_register(out, *registers, r);
-  firmware::print_line("registers %QW1..: ", UINT(load_register(out, *registers, 0)), " ", UINT(load_register(out, *registers, 1)),
-                       " ", UINT(load_register(out, *registers, 2)), " ", UINT(load_register(out, *registers, 3)),
-                       ", coil 1 ", BOOL(load_bit(out, *coils, 1)));
+  firmware::print_line("registers %QW1..: ", UINT(load_register(out, *registers, 0)), " ",
+                       UINT(load_register(out, *registers, 1)), " ", UINT(load_register(out, *registers, 2)), " ",
+                       UINT(load_register(out, *registers, 3)), ", coil 1 ", BOOL(load_bit(out, *coils, 1)));
 
   const bool ok = field.cycle == 3 && on && reference == 2200 && position == 150000 &&
                   echo == ((0x0123456789ABCDEFULL + 3) ^ 0xFF00FF00FF00FF00ULL) && out_bits == 0x40700000U &&
-                  cycles == WORD(3) && load_bit(out, *coils, 1) && sum == (get_bytes(out, 1, 2) + get_bytes(out, 3, 2) +
-                                                                           get_bytes(out, 5, 2) + get_bytes(out, 7, 2));
+                  cycles == WORD(3) && load_bit(out, *coils, 1) &&
+                  sum == (get_bytes(out, 1, 2) + get_bytes(out, 3, 2) + get_bytes(out, 5, 2) + get_bytes(out, 7, 2));
   firmware::print_line(ok ? "process image: as expected" : "process image: WRONG");
   return ok ? firmware::passed : firmware::failed;
 }

@@ -63,13 +63,14 @@ void write_output_port(std::uint8_t bits) {
 // write_outputs at its end (docs/scheduler.md, "I/O").
 struct board_io {
   void read_inputs(std::span<std::byte> inputs) { inputs[0] = std::byte{read_input_port()}; }
-  void write_outputs(std::span<const std::byte> outputs) { write_output_port(std::to_integer<std::uint8_t>(outputs[0])); }
+  void write_outputs(std::span<const std::byte> outputs) {
+    write_output_port(std::to_integer<std::uint8_t>(outputs[0]));
+  }
 };
 // ------------------------------------------------------------------------------------------
 
 application plc{
-    task<PLC_PRG>{"Main", cyclic{"T#10ms"_iec}, 1},
-    use_image<controller_image>{},
+    task<PLC_PRG>{"Main", cyclic{"T#10ms"_iec}, 1}, use_image<controller_image>{},
     retain_capacity<0>{},  // no RETAIN variables
 };
 board_io io;

@@ -87,9 +87,11 @@ TEST_CASE("constant_division: the long division gives floor(n / d) for run-time 
     CHECK(detail::divide_u64(n, d) == n / d);
     ++checked;
   };
-  for (std::uint64_t d : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}, std::uint64_t{100}, std::uint64_t{1000000},
-                          std::uint64_t{0xFFFFFFFFU}, std::uint64_t{0x100000000ULL}, (std::uint64_t{1} << 63) + 1, max64}) {
-    for (std::uint64_t n : {std::uint64_t{0}, std::uint64_t{1}, d - 1, d, d + 1, max64 - 1, max64, max64 / 2 + 1}) check(n, d);
+  for (std::uint64_t d :
+       {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}, std::uint64_t{100}, std::uint64_t{1000000},
+        std::uint64_t{0xFFFFFFFFU}, std::uint64_t{0x100000000ULL}, (std::uint64_t{1} << 63) + 1, max64}) {
+    for (std::uint64_t n : {std::uint64_t{0}, std::uint64_t{1}, d - 1, d, d + 1, max64 - 1, max64, max64 / 2 + 1})
+      check(n, d);
   }
   for (int i = 0; i < 20000; ++i) {
     const std::uint64_t n = random();
