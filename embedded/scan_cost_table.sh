@@ -51,7 +51,7 @@ done
       END { printf "| %s | %s | %s | %s |\n", core, machine, count["timers_counters"], count["sfc_station"] }' "$results"
   done
   echo
-  echo "Averages over every scan of the example (151 and 601 scans); $(arm-none-eabi-gcc --version | head -n 1), \`-Os\`; $(qemu-system-arm --version | head -n 1)."
+  echo "Averages over every scan of the example (151 and 601 scans); $(arm-none-eabi-gcc --version | head -n 1), \`-Os -flto\`; $(qemu-system-arm --version | head -n 1)."
   echo "<!-- scan-cost end -->"
 } >"$table"
 

@@ -1,16 +1,14 @@
-# Fails if code that may run in a task cycle divides 64-bit integers in software:
+# Fails if a firmware image divides 64-bit integers in software:
 #
 #   cmake -DOBJDUMP=<arm-none-eabi-objdump> -DELF=<image> -P check_divisions.cmake
 #
 # A 32-bit Cortex-M has no 64-bit divide instruction (a Cortex-M0+ has none at all): `a / b` on
 # 64-bit operands calls libgcc's __aeabi_uldivmod or __aeabi_ldivmod, hundreds of cycles on a
-# small core. The disassembly is the evidence: every function that calls one of them is listed,
-# and each must be one of those that docs/embedded.md ("64-bit divisions") names as outside the
-# task cycle or as measured there: the scheduler's skip_missed_releases (a cyclic task that
-# fell behind) and freewheeling_pause (a freewheeling task's pause), the text of numbers the
-# examples print at the end (firmware::put, iecoop's to_text and the trace writers), and the
-# division routines themselves. The `leaky_division` image proves the check can fail
-# (expect_check_fails.cmake).
+# small core and 700 bytes of flash. iecoop divides an LTIME by a constant through its
+# reciprocal and by a run-time value without the routine (iecoop/detail/constant_division.hpp;
+# docs/embedded.md, "64-bit divisions"), so no image of iecoop's needs it. The disassembly is
+# the evidence: every function that calls one of the routines is listed (but the routines
+# themselves). The `leaky_division` image proves the check can fail (expect_check_fails.cmake).
 cmake_minimum_required(VERSION 3.25)
 if(NOT DEFINED OBJDUMP OR NOT DEFINED ELF)
   message(FATAL_ERROR "usage: cmake -DOBJDUMP=<objdump> -DELF=<image> -P check_divisions.cmake")
@@ -22,7 +20,7 @@ if(NOT status EQUAL 0)
 endif()
 
 set(division_routines "__aeabi_uldivmod|__aeabi_ldivmod|__udivmoddi4|__divmoddi4|__udivdi3|__divdi3|__umoddi3|__moddi3")
-set(allowed "skip_missed_releases|freewheeling_pause|firmware::put|write_unsigned|trace_text|put_decimal|write_vcd|write_csv|to_text|${division_routines}")
+set(allowed "^(${division_routines})$")
 
 string(REPLACE ";" "\\;" listing "${listing}")  # a demangled name may hold `;`: keep lines whole
 string(REPLACE "\n" ";" lines "${listing}")
@@ -41,7 +39,8 @@ endforeach()
 list(REMOVE_DUPLICATES found)
 if(found)
   string(REPLACE ";" "\n  " found "${found}")
-  message(FATAL_ERROR "${ELF} divides 64-bit integers in software where a task cycle may run:\n  ${found}\n"
-                      "use a division by a constant (iecoop/detail/constant_division.hpp) or move it out of the cycle")
+  message(FATAL_ERROR "${ELF} divides 64-bit integers with libgcc's routine:\n  ${found}\n"
+                      "divide by a constant (detail::divide_by<D>) or with detail::divide_u64 "
+                      "(iecoop/detail/constant_division.hpp), or in 32 bits")
 endif()
-message("${ELF}: no 64-bit division outside the functions docs/embedded.md names")
+message("${ELF}: no 64-bit division routine called")

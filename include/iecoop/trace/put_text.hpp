@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/trace/channels.hpp>
 #include <iecoop/types/literal_text.hpp>
 
@@ -36,15 +37,19 @@ void put_signed(Put& put, std::int64_t value) {
                value < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(value) : static_cast<std::uint64_t>(value));
 }
 
-/// `ns` in units of `unit_ns` (a power of ten up to 1 s), exactly: `21000`, `0.25`, `0.000000001`.
-template <class Put>
-void put_decimal(Put& put, std::uint64_t ns, std::uint64_t unit_ns) {
-  put_unsigned(put, ns / unit_ns);
-  std::uint64_t fraction = ns % unit_ns;
+/// `ns` in units of `Unit` ns (a power of ten up to 1 s), exactly: `21000`, `0.25`,
+/// `0.000000001`. The unit is a constant, so that a 32-bit core divides by its reciprocal
+/// (detail/constant_division.hpp), and the fraction, below 1 s, in 32 bits.
+template <std::uint64_t Unit, class Put>
+void put_decimal(Put& put, std::uint64_t ns) {
+  static_assert(Unit >= 1 && Unit <= 1'000'000'000, "iecoop: internal: a unit from 1 ns to 1 s");
+  const std::uint64_t whole = divide_by<Unit>(ns);
+  put_unsigned(put, whole);
+  auto fraction = static_cast<std::uint32_t>(ns - whole * Unit);
   if (fraction == 0) return;
   char digits[10] = {'.'};
   std::size_t length = 1;
-  for (std::uint64_t place = unit_ns / 10; place > 0; place /= 10) {
+  for (auto place = static_cast<std::uint32_t>(Unit / 10); place > 0; place /= 10) {
     digits[length++] = static_cast<char>('0' + fraction / place);
     fraction %= place;
   }
@@ -55,13 +60,13 @@ void put_decimal(Put& put, std::uint64_t ns, std::uint64_t unit_ns) {
 /// `ns` as milliseconds: `21000`, or `0.25` when it is no whole number of them.
 template <class Put>
 void put_milliseconds(Put& put, std::uint64_t ns) {
-  put_decimal(put, ns, 1'000'000);
+  put_decimal<1'000'000>(put, ns);
 }
 
 /// `ns` as seconds, exactly: `21`, `1.5`, `0.000000001`.
 template <class Put>
 void put_seconds(Put& put, std::uint64_t ns) {
-  put_decimal(put, ns, 1'000'000'000);
+  put_decimal<1'000'000'000>(put, ns);
 }
 
 /// A recorded value but a REAL or LREAL as a number: BOOL 0 or 1, integers and counts in

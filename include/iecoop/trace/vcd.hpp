@@ -30,6 +30,7 @@
 #include <string_view>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/trace/channels.hpp>
 #include <iecoop/trace/put_text.hpp>
 #include <iecoop/trace/view.hpp>
@@ -161,21 +162,24 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
   const auto channels = view.channels();
 
   // The timescale: the largest power of ten of nanoseconds (at most 1 s) dividing every time.
-  std::uint64_t unit = 1'000'000'000;
+  // (The unit is known only here: detail::divide_u64, which needs no 64-bit division routine on a
+  // 32-bit core.)
+  std::uint32_t unit = 1'000'000'000;
+  const auto in_units = [&unit](LTIME t) { return detail::divide_u64(t.count(), unit); };
   for (std::size_t i = 0; i < view.size() && unit > 1; ++i) {
-    while (unit > 1 && view.time(i).count() % unit != 0) unit /= 10;
+    while (unit > 1 && in_units(view.time(i)) * unit != view.time(i).count()) unit /= 10;
   }
   static constexpr std::string_view scales[] = {"1 ns",   "10 ns", "100 ns", "1 us",   "10 us",
                                                 "100 us", "1 ms",  "10 ms",  "100 ms", "1 s"};
   std::size_t scale = 0;
-  for (std::uint64_t u = unit; u > 1; u /= 10) ++scale;
+  for (std::uint32_t u = unit; u > 1; u /= 10) ++scale;
 
   put("$version iecoop trace recorder $end\n");
   if (view.trigger_index() != trace_view::no_trigger) {
     put("$comment trigger at cycle ");
     detail::put_unsigned(put, view.cycle(view.trigger_index()));
     put(", time ");
-    detail::put_unsigned(put, view.time(view.trigger_index()).count() / unit);
+    detail::put_unsigned(put, in_units(view.time(view.trigger_index())));
     put(" $end\n");
   }
   put("$timescale ");
@@ -216,7 +220,7 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
 
   // The first sample in full, then the changes.
   put("#");
-  detail::put_unsigned(put, view.time(0).count() / unit);
+  detail::put_unsigned(put, in_units(view.time(0)));
   put("\n$dumpvars\n");
   for (std::size_t c = 0; c < channels.size(); ++c) {
     detail::put_vcd_sample_value(put, view, 0, c, options);
@@ -226,7 +230,7 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
   for (std::size_t i = 1; i < view.size(); ++i) {
     if (view.same_values(i, i - 1)) continue;
     put("#");
-    detail::put_unsigned(put, view.time(i).count() / unit);
+    detail::put_unsigned(put, in_units(view.time(i)));
     put("\n");
     for (std::size_t c = 0; c < channels.size(); ++c) {
       if (!view.same_value(i, i - 1, c)) detail::put_vcd_sample_value(put, view, i, c, options);
@@ -235,7 +239,7 @@ void write_vcd(const trace_view& view, Put&& put, const vcd_options& options = {
   }
   if (!last_written) {
     put("#");
-    detail::put_unsigned(put, view.time(view.size() - 1).count() / unit);
+    detail::put_unsigned(put, in_units(view.time(view.size() - 1)));
     put("\n");
   }
 }

@@ -559,8 +559,9 @@ constexpr char* write_unsigned(char* out, U v) noexcept {
 constexpr char* write_duration(char* out, std::uint64_t ns, std::size_t smallest_unit) noexcept {
   bool any = false;
   for (std::size_t u = 0; u <= smallest_unit; ++u) {
-    const std::uint64_t count = ns / duration_units[u].ns;
-    ns %= duration_units[u].ns;
+    // (no 64-bit division routine on a 32-bit core: detail/constant_division.hpp)
+    const std::uint64_t count = divide_u64(ns, duration_units[u].ns);
+    ns -= count * duration_units[u].ns;
     if (count != 0) {
       out = write_unsigned(out, count);
       out = write(out, duration_units[u].name);
