@@ -424,6 +424,7 @@ class chart {
   void restart(POU& pou) {
     started_ = true;
     state_ = next_state_ = 0;  // the initial step's state
+    next_entry_ = no_entry;
     each_step([&](auto i) {
       constexpr std::size_t I = decltype(i)::value;
       const bool initial = I == initial_index;
@@ -970,7 +971,10 @@ class chart {
   // one call through a table of those functions; a state that fired a transition knows the
   // state it leads to. The bodies of the other actions are tested on their Q; the controls,
   // where a step changed, go through the general code's tables (control_n: for an action
-  // qualified N and L alone, a test of its steps and their times; else control_of). The state
+  // qualified N and L alone, a test of its steps and their times; else control_of). In the
+  // codesys order, the scan after one transition fired alone is an entry of its own (up to
+  // max_entries of them): the steps it changed and the controls of their actions as code
+  // (scan_codesys_entered), the rest as in its state's function. The state
   // lives beside the general engine's bit sets, which are kept as before: both engines compute
   // the same, scan for scan (tests/sfc_engines, tests/unit/sfc_engines_test.cpp).
   static constexpr std::size_t max_states = 64;
@@ -1324,16 +1328,131 @@ class chart {
   template <std::size_t M>
   void fire_in(POU& pou, bool tip) {
     next_state_ = static_cast<std::uint8_t>(M);
+    next_entry_ = no_entry;
     if (SFCTipMode && !tip) return;
     unsigned fired = 0;
     std::uint8_t next = static_cast<std::uint8_t>(M);
-    each_of<candidates_in<M>>([&](auto tr) {
-      constexpr std::size_t Tr = decltype(tr)::value;
-      if (try_fire_valid<Tr, false, shares_source<M, Tr>>(pou, tip)) {
-        next = fired++ == 0 ? state_after<M, Tr> : no_state;
-      }
-    });
+    std::uint8_t entry = no_entry;
+    [&]<std::size_t... J>(std::index_sequence<J...>) {
+      (
+          [&] {
+            constexpr std::size_t Tr = candidates_in<M>.at[J];
+            if (try_fire_valid<Tr, false, shares_source<M, Tr>>(pou, tip)) {
+              next = fired++ == 0 ? state_after<M, Tr> : no_state;
+              entry = fired == 1 ? entry_of<M, J> : no_entry;
+            }
+          }(),
+          ...);
+    }(std::make_index_sequence<candidates_in<M>.size>{});
     next_state_ = next;
+    next_entry_ = entry;
+  }
+
+  // --- Entries: the scan after one transition fired, its step changes known ------------------
+  // The scan after transition Tr (the J-th that state M tests) fired alone knows the steps it
+  // activates and deactivates: their X and T, SFCCurrentStep and the controls of their actions
+  // are written for those steps, as code, instead of through the bit sets' loops and the
+  // controls' table. It checks first that the bit sets say exactly that (a restart or a flag
+  // in between changes them), and else runs the state's own scan, which reads them.
+  static constexpr std::uint8_t no_entry = 0xFF;
+  // The first entry of each state (an entry per transition a state tests), and their count.
+  static constexpr std::array<std::size_t, max_states + 1> entry_offsets = [] {
+    std::array<std::size_t, max_states + 1> offsets{};
+    [&]<std::size_t... M>(std::index_sequence<M...>) {
+      const std::array<std::size_t, sizeof...(M)> sizes{candidates_in<M>.size...};
+      for (std::size_t m = 0; m < sizes.size(); ++m) offsets[m + 1] = offsets[m] + sizes[m];
+    }(std::make_index_sequence<state_count>{});
+    return offsets;
+  }();
+  static constexpr std::size_t entry_count = entry_offsets[state_count];
+  // Entries are made where the chart has at most 96 (each is a function of its own to compile;
+  // and an entry's number fits a byte below no_entry).
+  static constexpr std::size_t max_entries = 96;
+  static constexpr bool with_entries = entry_count > 0 && entry_count <= max_entries;
+  template <std::size_t M, std::size_t J>
+  static constexpr std::uint8_t entry_of = with_entries ? static_cast<std::uint8_t>(entry_offsets[M] + J) : no_entry;
+
+  // The actions whose controls change where the steps `changed` change (mark_changed_steps_actions).
+  static constexpr action_set actions_of_steps(const step_set& changed) noexcept {
+    action_set result{};
+    for (std::size_t i = 0; i < step_count; ++i) {
+      if (!detail::test_bit<step_count>(changed, i)) continue;
+      for (std::size_t w = 0; w < result.size(); ++w) result[w] |= step_action_mask[i][w];
+    }
+    return result;
+  }
+  template <std::size_t Tr>
+  static constexpr action_set actions_changed_by = [] {
+    step_set changed{};
+    for (std::size_t w = 0; w < changed.size(); ++w) changed[w] = all_sources[Tr][w] | all_targets[Tr][w];
+    return actions_of_steps(changed);
+  }();
+  template <std::size_t Tr>
+  static constexpr index_list<action_count> ranks_changed_by = [] {
+    index_list<action_count> list{};
+    for (std::size_t k = 0; k < action_count; ++k) {
+      if (detail::test_bit<action_count>(actions_changed_by<Tr>, k)) list.at[list.size++] = k;
+    }
+    return list;
+  }();
+  // The steps transition Tr leaves that are not in state N, and those of N it enters.
+  template <std::size_t N, std::size_t Tr>
+  static constexpr index_list<step_count> steps_left_by = [] {
+    index_list<step_count> list{};
+    for (std::size_t i = 0; i < step_count; ++i) {
+      if (detail::test_bit<step_count>(all_sources[Tr], i) && !detail::test_bit<step_count>(states.sets[N], i))
+        list.at[list.size++] = i;
+    }
+    return list;
+  }();
+  template <std::size_t N, std::size_t Tr>
+  static constexpr index_list<step_count> steps_entered_by = [] {
+    index_list<step_count> list{};
+    for (std::size_t i = 0; i < step_count; ++i) {
+      if (detail::test_bit<step_count>(all_targets[Tr], i) && detail::test_bit<step_count>(states.sets[N], i))
+        list.at[list.size++] = i;
+    }
+    return list;
+  }();
+
+  // The codesys scan in state N after transition Tr fired alone in the last scan: what
+  // scan_codesys_in<N> does with `changed`, its step changes written out.
+  template <std::size_t N, std::size_t Tr>
+  void scan_codesys_entered(POU& pou, TIME elapsed, bool tip) {
+    each_of<steps_left_by<N, Tr>>(
+        [&](auto i) { detail::engine_access::ref((pou.*members[decltype(i)::value]).X) = FALSE; });
+    each_of<steps_entered_by<N, Tr>>([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      X<I>(pou) = TRUE;
+      T<I>(pou) = TIME{};
+    });
+    active_ = states.sets[N];
+    if constexpr (steps_in<N>.size > 0) detail::engine_access::name(SFCCurrentStep, current_step_in<N>);
+    each_step_in<N>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
+    steps_of_scan_in<N>(pou, elapsed, false);
+    if constexpr (action_count > 0) {
+      // The controls of the actions of the steps that changed, each called as itself; then
+      // those a pulse, a delay or a limit still has pending, through the table.
+      action_set pending = take_dirty();
+      each_of<ranks_changed_by<Tr>>([&](auto k) {
+        constexpr std::size_t K = decltype(k)::value;
+        control_n::template call<K>(*this, pou, elapsed);
+      });
+      for (std::size_t w = 0; w < pending.size(); ++w) pending[w] &= ~actions_changed_by<Tr>[w];
+      detail::for_each_bit<action_count>(pending, control_n_table, *this, pou, elapsed);
+      if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
+      bool tested = false;
+      for (std::size_t w = 0; w < q_.size(); ++w) tested = tested || (q_[w] & tested_bodies[w]) != 0;
+      each_of<bodies_in<N>>([&](auto k) {
+        constexpr std::size_t K = decltype(k)::value;
+        if constexpr (n_action<K>::only) {
+          body_of::template call<K>(pou);
+        } else {
+          if (tested && detail::test_bit<action_count>(q_, K)) body_of::template call<K>(pou);
+        }
+      });
+    }
+    fire_in<N>(pou, tip);
   }
 
   // The codesys scan in state M, after scan_codesys's first lines.
@@ -1412,6 +1531,35 @@ class chart {
     static constexpr auto rest = []<std::size_t... M>(std::index_sequence<M...>) {
       return std::array<void (*)(chart&, POU&, TIME), state_count>{&rest_of<M>...};
     }(std::make_index_sequence<state_count>{});
+
+    // The scan after the J-th transition state M tests fired alone.
+    template <std::size_t M, std::size_t J>
+    static void entered(chart& c, POU& pou, TIME elapsed, bool tip) {
+      constexpr std::size_t Tr = candidates_in<M>.at[J];
+      constexpr std::uint8_t N = state_after<M, Tr>;
+      bool as_known = N != no_state && c.state_ == N;
+      for (std::size_t w = 0; w < c.activated_.size(); ++w) {
+        as_known = as_known && c.activated_[w] == all_targets[Tr][w] && c.deactivated_[w] == all_sources[Tr][w];
+      }
+      if constexpr (N != no_state) {
+        if (as_known) {
+          c.template scan_codesys_entered<N, Tr>(pou, elapsed, tip);
+          return;
+        }
+      }
+      scans[c.state_](c, pou, elapsed, tip, true);
+    }
+    using entry_function = void (*)(chart&, POU&, TIME, bool);
+    template <std::size_t M, std::size_t... J>
+    static constexpr void put_entries(std::array<entry_function, entry_count>& table, std::index_sequence<J...>) {
+      // (made only where the chart has entries: with_entries)
+      ((table[entry_offsets[M] + J] = &entered<M, J>), ...);
+    }
+    static constexpr auto entries = []<std::size_t... M>(std::index_sequence<M...>) {
+      std::array<entry_function, entry_count> table{};
+      (put_entries<M>(table, std::make_index_sequence<candidates_in<M>.size>{}), ...);
+      return table;
+    }(std::make_index_sequence < with_entries ? state_count : 0 > {});
   };
 
   void scan(POU& pou, TIME elapsed, bool tip) {
@@ -1452,6 +1600,9 @@ class chart {
       if (state_ == no_state) {  // (a set of steps the compile-time search did not find: none is known)
         scan_codesys_rest(pou, elapsed, tip);
         next_state_ = no_state;  // found again from the steps at the next change
+        next_entry_ = no_entry;
+      } else if (changed && next_entry_ != no_entry) {
+        if constexpr (with_entries) state_functions<>::entries[next_entry_](*this, pou, elapsed, tip);
       } else {
         state_functions<>::scans[state_](*this, pou, elapsed, tip, changed);
       }
@@ -1541,8 +1692,9 @@ class chart {
   std::array<detail::control, action_count> controls_{};
   std::array<action_state, action_count> states_{};
   TIME last_{};
-  std::uint8_t state_ = 0;       // compiled engine: the state of the active steps (no_state: the general scan)
-  std::uint8_t next_state_ = 0;  // ... the state the scan's transitions lead to (codesys: for the next scan)
+  std::uint8_t state_ = 0;          // compiled engine: the state of the active steps (no_state: the general scan)
+  std::uint8_t next_state_ = 0;     // ... the state the scan's transitions lead to (codesys: for the next scan)
+  std::uint8_t next_entry_ = 0xFF;  // ... the entry of the one transition that fired (no_entry: none or several)
   bool started_ = false;
   bool quit_held_ = false;
   bool tip_previous_ = false;
