@@ -1279,17 +1279,34 @@ class chart {
         detail::for_each_bit<action_count>(take_dirty(), control_n_table, *this, pou, elapsed);
         if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
       }
-      bool tested = false;  // one test for all the actions whose Q is known only at run time
-      for (std::size_t w = 0; w < q_.size(); ++w) tested = tested || (q_[w] & tested_bodies[w]) != 0;
-      each_of<bodies_in<M>>([&](auto k) {
-        constexpr std::size_t K = decltype(k)::value;
-        if constexpr (n_action<K>::only) {
-          body_of::template call<K>(pou);
-        } else {
-          if (tested && detail::test_bit<action_count>(q_, K)) body_of::template call<K>(pou);
-        }
-      });
+      run_bodies_in<M>(pou);
     }
+  }
+  // The bodies state M calls, in run order (bodies_in<M>).
+  template <std::size_t M>
+  [[gnu::always_inline]] void run_bodies_in(POU& pou) {
+    bool tested = false;  // one test for all the actions whose Q is known only at run time
+    for (std::size_t w = 0; w < q_.size(); ++w) tested = tested || (q_[w] & tested_bodies[w]) != 0;
+    each_of<bodies_in<M>>([&](auto k) {
+      constexpr std::size_t K = decltype(k)::value;
+      if constexpr (n_action<K>::only) {
+        body_of::template call<K>(pou);
+      } else {
+        if (tested && detail::test_bit<action_count>(q_, K)) body_of::template call<K>(pou);
+      }
+    });
+  }
+  // Step I becomes active in this scan: X := TRUE, T := 0.
+  template <std::size_t I>
+  static void step_entered(POU& pou) {
+    X<I>(pou) = TRUE;
+    T<I>(pou) = TIME{};
+  }
+  // The steps of state M are the active ones now.
+  template <std::size_t M>
+  void state_entered() {
+    active_ = states.sets[M];
+    if constexpr (steps_in<M>.size > 0) detail::engine_access::name(SFCCurrentStep, current_step_in<M>);
   }
 
   // The transitions state M tests, in the order fire() tests them (by step, else by priority).
@@ -1421,13 +1438,8 @@ class chart {
   void scan_codesys_entered(POU& pou, TIME elapsed, bool tip) {
     each_of<steps_left_by<N, Tr>>(
         [&](auto i) { detail::engine_access::ref((pou.*members[decltype(i)::value]).X) = FALSE; });
-    each_of<steps_entered_by<N, Tr>>([&](auto i) {
-      constexpr std::size_t I = decltype(i)::value;
-      X<I>(pou) = TRUE;
-      T<I>(pou) = TIME{};
-    });
-    active_ = states.sets[N];
-    if constexpr (steps_in<N>.size > 0) detail::engine_access::name(SFCCurrentStep, current_step_in<N>);
+    each_of<steps_entered_by<N, Tr>>([&](auto i) { step_entered<decltype(i)::value>(pou); });
+    state_entered<N>();
     each_step_in<N>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
     steps_of_scan_in<N>(pou, elapsed, false);
     if constexpr (action_count > 0) {
@@ -1441,16 +1453,7 @@ class chart {
       for (std::size_t w = 0; w < pending.size(); ++w) pending[w] &= ~actions_changed_by<Tr>[w];
       detail::for_each_bit<action_count>(pending, control_n_table, *this, pou, elapsed);
       if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
-      bool tested = false;
-      for (std::size_t w = 0; w < q_.size(); ++w) tested = tested || (q_[w] & tested_bodies[w]) != 0;
-      each_of<bodies_in<N>>([&](auto k) {
-        constexpr std::size_t K = decltype(k)::value;
-        if constexpr (n_action<K>::only) {
-          body_of::template call<K>(pou);
-        } else {
-          if (tested && detail::test_bit<action_count>(q_, K)) body_of::template call<K>(pou);
-        }
-      });
+      run_bodies_in<N>(pou);
     }
     fire_in<N>(pou, tip);
   }
@@ -1470,13 +1473,9 @@ class chart {
       }
       each_step_in<M>([&](auto i) {
         constexpr std::size_t I = decltype(i)::value;
-        if (detail::test_bit<step_count>(activated_, I)) {
-          X<I>(pou) = TRUE;
-          T<I>(pou) = TIME{};
-        }
+        if (detail::test_bit<step_count>(activated_, I)) step_entered<I>(pou);
       });
-      active_ = states.sets[M];
-      if constexpr (steps_in<M>.size > 0) detail::engine_access::name(SFCCurrentStep, current_step_in<M>);
+      state_entered<M>();
     }
     each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
     steps_of_scan_in<M>(pou, elapsed, changed);
