@@ -7,6 +7,10 @@
 #include <cstdint>
 #include <string_view>
 
+#if defined(IECOOP_FIRMWARE_STACK_REPORT)
+#include <iecoop/types/literal_text.hpp>  // the report's number
+#endif
+
 #include "semihosting.hpp"
 
 // The stack's bounds, from the linker script (embedded/cortex-m.ld).
@@ -46,17 +50,9 @@ inline std::uint32_t stack_high_water() noexcept {
 /// it; the tests compare stdout only).
 inline void report_stack_high_water() noexcept {
   char text[40] = "stack high-water: ";
-  std::size_t n = 18;
-  char digits[10];
-  std::size_t count = 0;
-  std::uint32_t value = stack_high_water();
-  do {
-    digits[count++] = static_cast<char>('0' + value % 10U);
-    value /= 10U;
-  } while (value != 0);
-  while (count > 0) text[n++] = digits[--count];
-  for (const char c : " bytes\n") text[n++] = c;
-  semihosting::write_stderr(std::string_view(text, n - 1));  // without the array's final '\0'
+  char* end = iecoop::detail::write_unsigned(text + 18, stack_high_water());
+  for (const char c : std::string_view(" bytes\n")) *end++ = c;
+  semihosting::write_stderr(std::string_view(text, static_cast<std::size_t>(end - text)));
 }
 #endif
 

@@ -16,15 +16,16 @@
 #include <cstdint>
 
 #include "console.hpp"
+#include "tick.hpp"
 
 namespace firmware::scan_cost {
 
 #if defined(IECOOP_FIRMWARE_SCAN_COST) && defined(__arm__)
 
 namespace detail {
-inline volatile std::uint32_t& syst_csr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000E010U); }
-inline volatile std::uint32_t& syst_rvr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000E014U); }
-inline volatile std::uint32_t& syst_cvr() { return *reinterpret_cast<volatile std::uint32_t*>(0xE000E018U); }
+using tick::detail::syst_csr;  // the SysTick's registers (tick.hpp)
+using tick::detail::syst_cvr;
+using tick::detail::syst_rvr;
 inline std::uint32_t elapsed(std::uint32_t from, std::uint32_t to) { return (from - to) & 0xFFFFFFU; }  // counts down
 
 inline std::uint64_t ticks = 0;              // the scans' ticks

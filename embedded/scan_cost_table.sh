@@ -14,7 +14,8 @@ cd "$(dirname "$0")/.."
 iecoop_require_packages cmake gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
 
 doc=docs/embedded.md
-cores="cortex-m0plus cortex-m3 cortex-m4f cortex-m7 cortex-m33 cortex-m55"
+. embedded/cores.sh
+cores=$iecoop_cores
 examples="timers_counters sfc_station"
 results=$(mktemp)
 table=$(mktemp)
@@ -23,14 +24,7 @@ trap 'rm -f "$results" "$table"' EXIT
 for core in $cores; do
   dir=build/$core-scan-cost
   cmake --preset "$core" -B "$dir" -DIECOOP_FIRMWARE_SCAN_COST=ON >/dev/null
-  case $core in  # the board of each core (embedded/cmake/arm-none-eabi.cmake)
-    cortex-m0plus) machine=microbit ;;
-    cortex-m3) machine=mps2-an385 ;;
-    cortex-m4f) machine=mps2-an386 ;;
-    cortex-m7) machine=mps2-an500 ;;
-    cortex-m33) machine=mps2-an505 ;;
-    cortex-m55) machine=mps3-an547 ;;
-  esac
+  machine=$(iecoop_machine_of "$core")
   for example in $examples; do
     cmake --build "$dir" --target "fw_$example" >/dev/null
     # shift=0: one instruction is one nanosecond of the virtual clock the SysTick counts.

@@ -37,11 +37,13 @@ inline std::uint32_t address_of(const void* p) noexcept {
 // The host's stdout is the special file ":tt" opened for writing (mode 4, "w"). SYS_WRITE0
 // would be shorter, but QEMU sends it to stderr, where a test cannot tell it from QEMU's own
 // messages.
-inline std::uint32_t open_stdout() noexcept {
+// ":tt" opened with mode 4 ("w") is stdout, with mode 8 ("a") stderr.
+inline std::uint32_t open_console(std::uint32_t mode) noexcept {
   static constexpr char name[] = ":tt";
-  const std::uint32_t block[3] = {address_of(name), 4U, sizeof name - 1};
+  const std::uint32_t block[3] = {address_of(name), mode, sizeof name - 1};
   return request(op_open, block);
 }
+inline std::uint32_t open_stdout() noexcept { return open_console(4U); }
 
 /// Writes `text` to the host's stdout.
 inline void write(std::string_view text) noexcept {
@@ -53,11 +55,7 @@ inline void write(std::string_view text) noexcept {
 
 /// Writes `text` to the host's stderr: ":tt" opened for appending (mode 8, "a").
 inline void write_stderr(std::string_view text) noexcept {
-  static constexpr char name[] = ":tt";
-  static const std::uint32_t handle = [] {
-    const std::uint32_t block[3] = {address_of(name), 8U, sizeof name - 1};
-    return request(op_open, block);
-  }();
+  static const std::uint32_t handle = open_console(8U);
   const std::uint32_t block[3] = {handle, address_of(text.data()), static_cast<std::uint32_t>(text.size())};
   request(op_write, block);
 }

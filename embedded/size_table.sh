@@ -13,7 +13,8 @@ iecoop_require_packages cmake python3 gcc-arm-none-eabi libnewlib-arm-none-eabi 
 
 doc=docs/embedded.md
 examples="i_math_interface property_and_method timers_counters scheduler trace sfc_station process_image fault"
-cores="cortex-m0plus cortex-m3 cortex-m4f cortex-m7 cortex-m33 cortex-m55"
+. embedded/cores.sh
+cores=$iecoop_cores
 
 for core in $cores; do
   cmake --preset "$core" >/dev/null
@@ -22,18 +23,6 @@ for core in $cores; do
   cmake --preset "$core" -B "build/$core-stack" -DIECOOP_FIRMWARE_STACK_REPORT=ON >/dev/null
   for example in $examples; do cmake --build "build/$core-stack" --target "fw_$example" >/dev/null; done
 done
-
-# The QEMU board of each core (embedded/cmake/arm-none-eabi.cmake).
-machine_of() {
-  case $1 in
-    cortex-m0plus) echo microbit ;;
-    cortex-m3) echo mps2-an385 ;;
-    cortex-m4f) echo mps2-an386 ;;
-    cortex-m7) echo mps2-an500 ;;
-    cortex-m33) echo mps2-an505 ;;
-    cortex-m55) echo mps3-an547 ;;
-  esac
-}
 
 # One row per image, from the section sizes (`size -A`): text is everything the image keeps
 # in flash but the first values of .data (vector table, code, constants, the constructor
@@ -50,7 +39,7 @@ row() {
   # shellcheck disable=SC2086 # the file names have no spaces
   static=$(python3 embedded/stack_depth.py $graphs |
     sed -n 's/^static stack: \([0-9]*\) bytes.*indirect calls not followed.*/\1+/p; s/^static stack: \([0-9]*\) bytes.*/\1/p' | head -n 1)
-  measured=$(timeout 60 qemu-system-arm -M "$(machine_of "$3")" -display none -monitor none -serial none \
+  measured=$(timeout 60 qemu-system-arm -M "$(iecoop_machine_of "$3")" -display none -monitor none -serial none \
     -semihosting-config enable=on,target=native -kernel "build/$3-stack/embedded/fw_$1.elf" 2>&1 >/dev/null | sed -n 's/^stack high-water: \([0-9]*\) bytes.*/\1/p')
   arm-none-eabi-size -A -d "$2" | awk -v example="$1" -v core="$3" -v static="$static" -v measured="$measured" '
     $1 == ".vectors" || $1 == ".text" || $1 == ".ARM.exidx" || $1 == ".init_array" { text += $2 }
