@@ -91,6 +91,7 @@ class task_state : public task_info {
   bool released_ = false;
   bool active_ = false;
   bool event_previous_ = false;
+  std::uint8_t level_ = 0;  // its priority's level in the ready queues (detail::priority_level)
   LTIME cost_constant_{};
   LTIME (*cost_function_)(std::uint64_t, void*) = nullptr;
   void* cost_context_ = nullptr;
@@ -145,6 +146,7 @@ class scheduler {
   template <class... Args>
   explicit scheduler(const std::array<task_settings, N>& settings, Args&&... cycles_arguments) noexcept
       : cycles_{static_cast<Args&&>(cycles_arguments)...} {
+    std::uint32_t priorities = 0;  // the priorities the tasks have, as bits
     for (std::size_t i = 0; i < N; ++i) {
       task_settings s = settings[i];
       if (s.priority > 31) {
@@ -159,7 +161,9 @@ class scheduler {
       tasks_[i].index_ = static_cast<std::int32_t>(i);
       tasks_[i].context_ = fault_context{s.name, nullptr, &tasks_[i]};
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
+      priorities |= std::uint32_t{1} << s.priority;
     }
+    for (task_state& t : tasks_) t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
   }
   scheduler(const scheduler&) = delete;
   scheduler& operator=(const scheduler&) = delete;
@@ -267,7 +271,7 @@ class scheduler {
   /// begin_cycle() does its work.
   void begin_cycle(std::size_t index) {
     task_state& t = tasks_[index];
-    ready_.begin(index, t.settings_.priority);
+    ready_.begin(index, t.level_);
     start_cycle(t, index, t.cost_of(t.cycle_number_));
   }
 
@@ -279,7 +283,7 @@ class scheduler {
   // time, the common case (GCC inlines one of the two, not both: 229 instructions against 233).
   [[gnu::noinline]] void end_cycle(std::size_t index) {
     task_state& t = tasks_[index];
-    ready_.end(t.settings_.priority);
+    ready_.end(t.level_);
     finish_cycle(t, index);
   }
 
@@ -456,7 +460,7 @@ class scheduler {
     t.released_ = true;
     t.release_time_ = at;
     t.statistics_.consecutive_overruns = 0;
-    ready_.release(index, t.settings_.priority, [this](std::size_t a, std::size_t b) {
+    ready_.release(index, t.level_, [this](std::size_t a, std::size_t b) {
       return tasks_[a].release_time_ < tasks_[b].release_time_ ||
              (tasks_[a].release_time_ == tasks_[b].release_time_ && a < b);
     });
@@ -494,12 +498,12 @@ class scheduler {
           // begins and ends at once, never queued as under way.
           const LTIME cost = t.cost_of(t.cycle_number_);
           if (cost == LTIME{}) {
-            ready_.begin_and_end(next, t.settings_.priority);
+            ready_.begin_and_end(next, t.level_);
             start_cycle(t, next, cost);
             if (state_ == scheduler_state::running) finish_cycle(t, next);
             continue;
           }
-          ready_.begin(next, t.settings_.priority);
+          ready_.begin(next, t.level_);
           start_cycle(t, next, cost);
           if (state_ != scheduler_state::running) break;
         } else {
