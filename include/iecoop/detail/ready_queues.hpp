@@ -32,8 +32,8 @@ namespace iecoop::detail {
  */
 template <std::size_t N>
 class ready_queues {
-  using index_type = std::conditional_t<(N < 0xFFU), std::uint8_t,
-                                        std::conditional_t<(N < 0xFFFFU), std::uint16_t, std::size_t>>;
+  using index_type =
+      std::conditional_t<(N < 0xFFU), std::uint8_t, std::conditional_t<(N < 0xFFFFU), std::uint16_t, std::size_t>>;
 
  public:
   static constexpr std::size_t none = N;

@@ -163,7 +163,8 @@ class scheduler {
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
       priorities |= std::uint32_t{1} << s.priority;
     }
-    for (task_state& t : tasks_) t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
+    for (task_state& t : tasks_)
+      t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
   }
   scheduler(const scheduler&) = delete;
   scheduler& operator=(const scheduler&) = delete;
