@@ -5,7 +5,7 @@
 #   types/                           2
 #   pou/                             3
 #   standard/, sfc/                  4  (sfc/: charts, on the standard blocks' cycle clock)
-#   io/                              5
+#   io/, util/                       5  (util/: the CODESYS Util library, on the standard blocks)
 #   runtime/                         6
 #   trace/                           7  (recorder, writers, watch list: they observe the runtime)
 #   iecoop.hpp, trace.hpp, fmt.hpp,  8  (the umbrella and the integrations)
@@ -26,6 +26,7 @@ set(rank_pou 3)
 set(rank_standard 4)
 set(rank_sfc 4)
 set(rank_io 5)
+set(rank_util 5)
 set(rank_runtime 6)
 set(rank_trace 7)
 set(rank_exchange 8)

@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 iecoop_require_packages cmake python3 gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
 
 doc=docs/embedded.md
-examples="i_math_interface property_and_method timers_counters scheduler trace sfc_station process_image fault"
+examples="i_math_interface property_and_method timers_counters scheduler trace sfc_station process_image pid_loop fault"
 . embedded/cores.sh
 cores=$iecoop_cores
 

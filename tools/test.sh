@@ -26,8 +26,9 @@ cd "$(dirname "$0")/.."
 started=$(date +%s)
 . tools/require_packages.sh
 iecoop_require_packages cmake make g++ clang doctest-dev libfmt-dev libbenchmark-dev
-# python3 writes the random SFC charts of the engines' differential test (tests/sfc_engines).
-iecoop_require_packages python3
+# python3 writes the random SFC charts of the engines' differential test (tests/sfc_engines);
+# scipy simulates the Util library's PID loops that tests/util/pid_scipy.py compares with iecoop's.
+iecoop_require_packages python3 python3-scipy
 # valgrind's memcheck runs the initial-values program in the g++ build (tests initial_values.*).
 iecoop_require_packages valgrind
 # iecoop-check (docs/iecoop-check.md) is built on libclang's C API: its headers come with

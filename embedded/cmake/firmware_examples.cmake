@@ -3,7 +3,7 @@
 # Read by embedded/CMakeLists.txt (the images, run under QEMU) and by examples/CMakeLists.txt
 # (the same sources built for the host).
 set(IECOOP_FIRMWARE_EXAMPLES i_math_interface property_and_method timers_counters scheduler trace sfc_station process_image
-                             fault)
+                             pid_loop fault)
 foreach(example IN LISTS IECOOP_FIRMWARE_EXAMPLES)
   set(IECOOP_FIRMWARE_STATUS_${example} 0)
 endforeach()

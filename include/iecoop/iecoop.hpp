@@ -83,6 +83,9 @@
 #include <iecoop/sfc/chart.hpp>
 #include <iecoop/sfc/step.hpp>
 
+// util/: the CODESYS Util library — PID, ramps, generators, monitors, BCD and bits (docs/util.md)
+#include <iecoop/util/util.hpp>
+
 // io/: direct addresses, the process image, located variables, I/O drivers (6.5.5)
 #include <iecoop/io/address.hpp>
 #include <iecoop/io/driver.hpp>

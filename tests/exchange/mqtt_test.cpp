@@ -61,6 +61,7 @@ struct IO_PRG : program<IO_PRG> {
   var<WORD> wStatus;
   TON tDelay;
   FB_Axis fbAxis;
+  RAMP_REAL fbRamp;  // a Util block: its pins published as a standard block's are
   // Commanded.
   var<INT> iSetpoint;
   BOOL bPulse;
@@ -72,6 +73,7 @@ struct IO_PRG : program<IO_PRG> {
   var<DINT> diPulseCycles;
   void body() {
     tDelay("IN"_ = bStart, "PT"_ = "T#1s500ms"_iec);
+    fbRamp("IN"_ = REAL(0.0F), "ASCEND"_ = REAL(10.0F), "DESCEND"_ = REAL(10.0F), "TIMEBASE"_ = "T#1s"_iec);
     fbAxis();
     iSeenSetpoint = iSetpoint;
     bSeenPulse = bPulse;
@@ -177,7 +179,7 @@ TEST_SUITE("MQTT bridge") {
     io.tRun = "T#1s500ms"_iec;
     io.eMode = E_Mode::Auto;
     io.wStatus = WORD(255);
-    mqtt_bridge<16, 2> mqtt{test_config(b, "plant/line1", "mqtt-test-values")};
+    mqtt_bridge<24, 2> mqtt{test_config(b, "plant/line1", "mqtt-test-values")};
     CHECK(mqtt.add("IO_PRG.bStart", io.bStart));
     CHECK(mqtt.add("IO_PRG", "iCount", io.iCount));
     CHECK(mqtt.add("IO_PRG.rTemp", io.rTemp));
@@ -186,6 +188,7 @@ TEST_SUITE("MQTT bridge") {
     CHECK(mqtt.add("IO_PRG.eMode", io.eMode));
     CHECK(mqtt.add("IO_PRG.wStatus", io.wStatus));
     CHECK(mqtt.add_pins("IO_PRG.tDelay", io.tDelay));  // IN, PT, Q, ET
+    CHECK(mqtt.add_pins("IO_PRG.fbRamp", io.fbRamp));  // IN, ASCEND, DESCEND, TIMEBASE, RESET, OUT
     mqtt.attach(plc.task("Fast"));
     REQUIRE(mqtt.start() == nullptr);
     REQUIRE(eventually([&] { return mqtt.statistics().connected; }));
@@ -209,6 +212,9 @@ TEST_SUITE("MQTT bridge") {
           std::string::npos);
     CHECK(first.find("plant/line1/IO_PRG/tDelay/ET {\"value\":\"T#0ms\",\"type\":\"TIME\",\"cycle\":0}\n") !=
           std::string::npos);
+    CHECK(first.find("plant/line1/IO_PRG/fbRamp/TIMEBASE {\"value\":\"T#1s\",\"type\":\"TIME\",\"cycle\":0}\n") !=
+          std::string::npos);
+    CHECK(first.find("plant/line1/IO_PRG/fbRamp/OUT {\"value\":0") != std::string::npos);
 
     // A change is published; what did not change is not.
     io.iCount = 7;
@@ -225,9 +231,10 @@ TEST_SUITE("MQTT bridge") {
     CHECK(sub.count("plant/line1/IO_PRG/rTemp") == 1);
     CHECK(sub.count("plant/line1/IO_PRG/lrRatio") == 1);  // NaN is NaN: unchanged
     CHECK(sub.count("plant/line1/IO_PRG/tDelay/IN") == 1);
+    CHECK(sub.count("plant/line1/IO_PRG/fbRamp/OUT") == 1);  // IN 0: OUT stays 0
 
     // Retained: a client that subscribes later gets the newest of each at once.
-    const std::string late = retained(b, "plant/line1/#", 12);
+    const std::string late = retained(b, "plant/line1/#", 18);
     CHECK(late.find("plant/line1/status online\n") != std::string::npos);
     CHECK(late.find("plant/line1/IO_PRG/iCount {\"value\":7,\"type\":\"INT\",\"cycle\":1}\n") != std::string::npos);
     CHECK(late.find("plant/line1/IO_PRG/tDelay/ET {\"value\":\"T#60ms\",\"type\":\"TIME\",\"cycle\":6}\n") !=
@@ -237,10 +244,10 @@ TEST_SUITE("MQTT bridge") {
     CHECK(s.connects == 1);
     CHECK(s.snapshots == 7);
     CHECK(s.publish_errors == 0);
-    // "online", 11 values, 3 changes, then ET's 5 changes, of which the bridge may have seen
+    // "online", 17 values, 3 changes, then ET's 5 changes, of which the bridge may have seen
     // fewer: changes between two of its looks are coalesced (the newest is published).
-    CHECK(s.published >= 1 + 11 + 3 + 1);
-    CHECK(s.published <= 1 + 11 + 3 + 5);
+    CHECK(s.published >= 1 + 17 + 3 + 1);
+    CHECK(s.published <= 1 + 17 + 3 + 5);
   }
 
   TEST_CASE("cyclic publication: every channel every period, changed or not, not retained when told") {
