@@ -49,156 +49,131 @@ namespace iecoop {
 
 namespace detail {
 
-/// What a controller is given in one call (its inputs, as floats).
-struct controller_inputs {
-  float actual;
-  float set_point;
-  float kp;
-  float tn;
-  float tv;
-  float y_manual;
-  float y_offset;
-  float y_min;
-  float y_max;
-  bool manual;
-  bool reset;
-};
-
-/// What a controller writes.
-struct controller_outputs {
-  float y;
-  bool limits_active;
-  bool overflow;
-};
-
-/// The state and the steps of PD (Integral false), PID and PID_FIXCYCLE (Integral true).
+/**
+ * The state and the steps of PD (Integral false), PID and PID_FIXCYCLE (Integral true). A call
+ * reads the block's inputs where a step needs them and writes its outputs (the block hands
+ * their storage over), so that it costs what the steps cost.
+ */
 template <bool Integral>
 class controller_core {
  public:
-  /// Steps 1 to 4 of the header's list; TRUE if the call goes on to step 5.
-  bool begin(const controller_inputs& in, controller_outputs& out) noexcept {
-    error_ = in.set_point - in.actual;
-    if (!started_ || in.reset) {
+  /// One call of `block` (its ACTUAL, SET_POINT, KP, TN, TV, Y_MANUAL, Y_OFFSET, Y_MIN, Y_MAX,
+  /// MANUAL, RESET): steps 1 to 9 of the header's list; the seconds since the last call from
+  /// `clock` (restart() where the call ends before step 5, seconds() at step 5).
+  // Inlined into the block's body, its one caller (Clang 14 and 16 would call it: 6 instructions
+  // of a PID's 80 more per call).
+  template <class Block, class Clock>
+  [[gnu::always_inline]] void call(const Block& block, Clock& clock, REAL& y_out, BOOL& limits_out,
+                                   BOOL& overflow_out) noexcept {
+    const float e = static_cast<float>(block.SET_POINT) - static_cast<float>(block.ACTUAL);
+    if (!started_ || block.RESET) {
       started_ = true;
-      take_parameters(in);
+      take_parameters(block);
       integral_ = 0.0F;
-      out.overflow = false;
-      slope_.reset(error_);
-      out.y = in.y_offset;
-      out.limits_active = false;
-      return false;
+      overflow_out = FALSE;
+      slope_.reset(e);
+      y_out = block.Y_OFFSET;
+      limits_out = FALSE;
+      clock.restart();
+      return;
     }
-    if (in.manual) {
-      take_parameters(in);
-      out.y = in.y_manual;
-      out.limits_active = false;
-      slope_.reset(error_);
+    if (block.MANUAL) {
+      take_parameters(block);
+      const float y_manual = block.Y_MANUAL;
+      y_out = y_manual;
+      limits_out = FALSE;
+      slope_.reset(e);
       if constexpr (Integral) {
         if (kp_ != 0.0F && tn_ != 0.0F) {
-          float a = in.y_manual - in.y_offset;
+          float a = y_manual - static_cast<float>(block.Y_OFFSET);
           a = a / kp_;
-          a = a - error_;
-          set_integral(a * tn_, out);
+          a = a - e;
+          set_integral(a * tn_, overflow_out);
         }
       }
-      return false;
-    }
-    return !out.overflow;
-  }
-
-  /// One call: steps 1 to 9, the time since the last call from `clock` (seconds(), and
-  /// restart() where the call ends before step 5).
-  template <class Clock>
-  void call(const controller_inputs& in, Clock& clock, controller_outputs& out) noexcept {
-    if (begin(in, out)) {
-      step(in, clock.seconds(), out);
-    } else {
       clock.restart();
+      return;
     }
-  }
-
-  /// Steps 5 to 9, `dt` seconds after the last call.
-  void step(const controller_inputs& in, float dt, controller_outputs& out) noexcept {
+    if (overflow_out) return;
+    const float dt = clock.seconds();
     if (!(dt > 0.0F)) return;
     if constexpr (Integral) {
-      if (!integrate(integral_, error_, dt)) {
-        out.overflow = true;
+      if (!integrate(integral_, e, dt)) {
+        overflow_out = TRUE;
         return;
       }
     }
-    const float d = slope_.next(error_, dt);
+    const float d = slope_.next(e, dt);
     const float d_part = tv_ * d;
-    float sum = error_;
+    float sum = e;
     if (Integral && tn_ != 0.0F) sum = sum + integral_ / tn_;
     sum = sum + d_part;
+    const float y_offset = block.Y_OFFSET;
     float y = kp_ * sum;
-    y = y + in.y_offset;
+    y = y + y_offset;
     bool limited = false;
-    if (in.y_min < in.y_max) {
-      if (y > in.y_max) {
-        y = in.y_max;
+    const float y_min = block.Y_MIN;
+    const float y_max = block.Y_MAX;
+    if (y_min < y_max) {
+      if (y > y_max) {
+        y = y_max;
         limited = true;
-      } else if (y < in.y_min) {
-        y = in.y_min;
+      } else if (y < y_min) {
+        y = y_min;
         limited = true;
       }
     }
     if constexpr (Integral) {
       if (limited && kp_ != 0.0F && tn_ != 0.0F) {
-        float a = y - in.y_offset;
+        float a = y - y_offset;
         a = a / kp_;
-        a = a - error_;
+        a = a - e;
         a = a - d_part;
-        set_integral(a * tn_, out);
+        set_integral(a * tn_, overflow_out);
       }
     }
-    out.y = y;
-    out.limits_active = limited;
+    y_out = y;
+    limits_out = BOOL(limited);
   }
 
  private:
-  void take_parameters(const controller_inputs& in) noexcept {
-    kp_ = in.kp;
-    tn_ = in.tn;
-    tv_ = in.tv;
+  template <class Block>
+  void take_parameters(const Block& block) noexcept {
+    kp_ = block.KP;
+    if constexpr (Integral) tn_ = block.TN;
+    tv_ = block.TV;
   }
-  void set_integral(float value, controller_outputs& out) noexcept {
+  void set_integral(float value, BOOL& overflow_out) noexcept {
     if (value <= integral_limit && value >= -integral_limit) {
       integral_ = value;
     } else {
-      out.overflow = true;
+      overflow_out = TRUE;
     }
   }
 
   four_point_slope slope_;
   float integral_ = 0.0F;  // of e over the seconds
-  float error_ = 0.0F;
-  float kp_ = 0.0F;  // the parameters taken at the start, a RESET or in manual mode
+  float kp_ = 0.0F;        // the parameters taken at the start, a RESET or in manual mode
   float tn_ = 0.0F;
   float tv_ = 0.0F;
   bool started_ = false;
 };
 
-/// The milliseconds since the last call, on the cycle clock.
+/// The seconds between two calls, on the cycle clock in whole milliseconds (PID, PD).
 class call_interval {
  public:
-  /// Seconds since the last call (0 on the first), as REAL: milliseconds / 1000.0.
+  /// The next interval starts now.
+  void restart() noexcept { last_ = cycle_clock::now_as<TIME>(); }
+  /// Seconds since restart() or the last seconds(), as REAL: milliseconds / 1000.0.
   float seconds() noexcept {
     const TIME now = cycle_clock::now_as<TIME>();
-    const std::uint32_t ms = timed_ ? static_cast<std::uint32_t>((now - last_).count()) : 0U;
+    const auto ms = static_cast<std::uint32_t>(now.count() - last_.count());
     last_ = now;
-    timed_ = true;
     return seconds_of(ms);
-  }
-  /// The next interval starts now.
-  void restart() noexcept {
-    last_ = cycle_clock::now_as<TIME>();
-    timed_ = true;
   }
 
  private:
   TIME last_;
-  bool timed_ = false;
 };
 
 /// PID_FIXCYCLE's clock: the time it is told.
@@ -207,24 +182,6 @@ struct told_interval {
   [[nodiscard]] float seconds() const noexcept { return cycle; }
   void restart() const noexcept {}
 };
-
-/// A controller block's inputs (PD has no TN: 0, no integral).
-template <class Block>
-[[nodiscard]] controller_inputs inputs_of(const Block& b) noexcept {
-  float tn = 0.0F;
-  if constexpr (requires { b.TN; }) tn = b.TN;
-  return controller_inputs{b.ACTUAL,
-                           b.SET_POINT,
-                           b.KP,
-                           tn,
-                           b.TV,
-                           b.Y_MANUAL,
-                           b.Y_OFFSET,
-                           b.Y_MIN,
-                           b.Y_MAX,
-                           static_cast<bool>(b.MANUAL),
-                           static_cast<bool>(b.RESET)};
-}
 
 }  // namespace detail
 
@@ -252,10 +209,8 @@ class PD : public function_block<PD> {
   friend struct block_access;
 
   void body() noexcept {
-    detail::controller_outputs out{Y.get(), static_cast<bool>(LIMITS_ACTIVE.get()), false};
-    core_.call(detail::inputs_of(*this), clock_, out);
-    Y = out.y;
-    LIMITS_ACTIVE = BOOL(out.limits_active);
+    BOOL no_overflow;  // PD has no integral to overflow
+    core_.call(*this, clock_, Y.ref(), LIMITS_ACTIVE.ref(), no_overflow);
   }
 
   detail::controller_core<false> core_;
@@ -287,13 +242,7 @@ class PID : public function_block<PID> {
  private:
   friend struct block_access;
 
-  void body() noexcept {
-    detail::controller_outputs out{Y.get(), static_cast<bool>(LIMITS_ACTIVE.get()), static_cast<bool>(OVERFLOW.get())};
-    core_.call(detail::inputs_of(*this), clock_, out);
-    Y = out.y;
-    LIMITS_ACTIVE = BOOL(out.limits_active);
-    OVERFLOW = BOOL(out.overflow);
-  }
+  void body() noexcept { core_.call(*this, clock_, Y.ref(), LIMITS_ACTIVE.ref(), OVERFLOW.ref()); }
 
   detail::controller_core<true> core_;
   detail::call_interval clock_;
@@ -327,12 +276,8 @@ class PID_FIXCYCLE : public function_block<PID_FIXCYCLE> {
   friend struct block_access;
 
   void body() noexcept {
-    detail::controller_outputs out{Y.get(), static_cast<bool>(LIMITS_ACTIVE.get()), static_cast<bool>(OVERFLOW.get())};
     detail::told_interval clock{CYCLE};
-    core_.call(detail::inputs_of(*this), clock, out);
-    Y = out.y;
-    LIMITS_ACTIVE = BOOL(out.limits_active);
-    OVERFLOW = BOOL(out.overflow);
+    core_.call(*this, clock, Y.ref(), LIMITS_ACTIVE.ref(), OVERFLOW.ref());
   }
 
   detail::controller_core<true> core_;

@@ -122,12 +122,12 @@ class slope_limiter : public function_block<slope_limiter<T>> {
   void body() noexcept {
     const TIME now = cycle_clock::now_as<TIME>();
     const bool first = !timed_;
-    const std::uint32_t elapsed = first ? 0U : static_cast<std::uint32_t>((now - last_).count());
+    const std::uint32_t elapsed = first ? 0U : static_cast<std::uint32_t>(now.count() - last_.count());
     last_ = now;
     timed_ = true;
     if (RESET) {
       timed_ = false;
-      rest_ = 0;
+      if constexpr (integral) carry_.rest = 0;
       return;
     }
     const std::uint32_t base = static_cast<std::uint32_t>(TIMEBASE.count());
@@ -142,7 +142,7 @@ class slope_limiter : public function_block<slope_limiter<T>> {
     const std::int32_t out = OUT.get().value();
     const std::int32_t diff = static_cast<std::int32_t>(IN.value()) - out;
     if (diff == 0) {
-      rest_ = 0;
+      carry_.rest = 0;
       return;
     }
     const int direction = diff > 0 ? 1 : -1;
@@ -153,15 +153,15 @@ class slope_limiter : public function_block<slope_limiter<T>> {
     if (base == 0U) {
       steps = rate;
     } else {
-      if (direction != direction_) rest_ = 0;  // a new stretch: the fraction left was for the other way
-      rest_ += rate * elapsed;
-      steps = rest_ / base;
-      rest_ -= steps * base;
+      if (direction != carry_.direction) carry_.rest = 0;  // a new stretch: the fraction was for the other way
+      carry_.rest += rate * elapsed;
+      steps = carry_.rest / base;
+      carry_.rest -= steps * base;
     }
-    direction_ = direction;
+    carry_.direction = direction;
     if (steps >= distance) {
       steps = distance;
-      rest_ = 0;
+      carry_.rest = 0;
     }
     OUT = INT(static_cast<std::int16_t>(out + direction * static_cast<std::int32_t>(steps)));
   }
@@ -184,10 +184,17 @@ class slope_limiter : public function_block<slope_limiter<T>> {
     }
   }
 
+  // RAMP_INT's fraction of an increment: increments x milliseconds not yet spent, in the
+  // direction of the stretch under way (RAMP_REAL has none: no bytes).
+  struct carry {
+    std::int64_t rest = 0;
+    int direction = 0;
+  };
+  struct no_carry {};
+
   TIME last_;
-  std::int64_t rest_ = 0;  // RAMP_INT: increments x milliseconds not yet spent
-  int direction_ = 0;
   bool timed_ = false;  // last_ holds the time of the previous call
+  [[no_unique_address]] std::conditional_t<integral, carry, no_carry> carry_;
 };
 
 }  // namespace detail
