@@ -199,6 +199,18 @@ TEST_SUITE("util: function manipulators") {
     CHECK(curve.ERR == BYTE(0));
   }
 
+  TEST_CASE("CHARCURVE: the whole INT range in one segment (the product exceeds a DINT)") {
+    ARRAY<POINT, 0, 10> kl;
+    kl[0] = POINT{INT(-32768), INT(-32768)};
+    kl[1] = POINT{INT(32767), INT(32767)};
+    CHARCURVE curve;
+    for (const int in : {-32768, -1, 0, 1, 12345, 32767}) {
+      curve("IN"_ = INT(static_cast<std::int16_t>(in)), "N"_ = BYTE(2), "P"_ = kl);
+      CHECK(curve.OUT == INT(static_cast<std::int16_t>(in)));  // -32768 + (IN + 32768) * 65535 / 65535
+      CHECK(curve.ERR == BYTE(0));
+    }
+  }
+
   TEST_CASE("RAMP_REAL: per TIMEBASE of the cycle clock, at 1, 10 and 7 ms") {
     // ASCEND 1000 and DESCEND 500 per T#1s: 1.0 and 0.5 per ms, so a call c ms after the last
     // moves OUT by c up or c / 2 down (exact in REAL). The first call only takes the time.

@@ -31,9 +31,8 @@ namespace iecoop {
 
 /// FUNCTION PACK : BYTE — B0 (bit 0) .. B7 (bit 7) as one BYTE.
 [[nodiscard]] constexpr BYTE PACK(BOOL B0, BOOL B1, BOOL B2, BOOL B3, BOOL B4, BOOL B5, BOOL B6, BOOL B7) noexcept {
-  const bool bits[8] = {bool(B0), bool(B1), bool(B2), bool(B3), bool(B4), bool(B5), bool(B6), bool(B7)};
-  unsigned value = 0;
-  for (unsigned i = 0; i < 8; ++i) value |= (bits[i] ? 1U : 0U) << i;
+  const unsigned value = (B0 ? 0x01U : 0U) | (B1 ? 0x02U : 0U) | (B2 ? 0x04U : 0U) | (B3 ? 0x08U : 0U) |
+                         (B4 ? 0x10U : 0U) | (B5 ? 0x20U : 0U) | (B6 ? 0x40U : 0U) | (B7 ? 0x80U : 0U);
   return BYTE(static_cast<std::uint8_t>(value));
 }
 

@@ -9,7 +9,7 @@
 //                                                     REAL(20.0),
 //                                                            "TIMEBASE"_ = "T#1s"_iec);
 //
-// CHARCURVE interpolates linearly between the two points around IN, in integer arithmetic
+// CHARCURVE interpolates linearly between the two points around IN, in 64-bit integer arithmetic
 // (Y0 + (IN - X0) * (Y1 - Y0) / (X1 - X0), the division truncating toward zero as ST's does).
 // ERR 0: no error; 1: the points are not in ascending X (checked from P[0] up to the segment
 // of IN, so completely only when IN is the largest X, as documented); 2: IN is outside
@@ -86,8 +86,10 @@ class CHARCURVE : public function_block<CHARCURVE> {
         return;
       }
       if (in <= x(i)) {
-        const std::int32_t dx = x(i) - x(i - 1);
-        const std::int32_t value = dx == 0 ? y(i - 1) : y(i - 1) + (in - x(i - 1)) * (y(i) - y(i - 1)) / dx;
+        // In 64 bits: (IN - X0) * (Y1 - Y0) reaches 65535 * 65535, beyond a DINT.
+        const std::int64_t dx = x(i) - x(i - 1);
+        const std::int64_t product = static_cast<std::int64_t>(in - x(i - 1)) * (y(i) - y(i - 1));
+        const std::int64_t value = dx == 0 ? y(i - 1) : y(i - 1) + product / dx;
         OUT = INT(static_cast<std::int16_t>(value));
         ERR = BYTE(0);
         return;
