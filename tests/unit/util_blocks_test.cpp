@@ -401,6 +401,18 @@ TEST_SUITE("util: signals") {
     CHECK(outs == std::vector<int>{-100, -72, -44, -16, 12, 40, 68, 96, 76});
   }
 
+  TEST_CASE("GEN: the period goes on past 49.7 days, where TIME's milliseconds wrap") {
+    // A T#7ms period, called every 1,000,000 ms (16.7 min) for 58 days: each call's place in the
+    // period is the time since the first call MOD 7, also once that time exceeds 2^32 ms.
+    GEN gen;
+    for (std::uint64_t k = 0; k <= 5000; ++k) {
+      const std::uint64_t t = k * 1'000'000U;
+      at_ms(1234 + t);
+      gen("MODE"_ = GEN_MODE::SAWTOOTH_RISE, "BASE"_ = TRUE, "PERIOD"_ = "T#7ms"_iec, "AMPLITUDE"_ = INT(70));
+      REQUIRE(gen.OUT.get().value() == -70 + static_cast<int>(2 * 70 * (t % 7) / 7));
+    }
+  }
+
   TEST_CASE("GEN: SINE and COSINE rounded to the nearest INT; per call with BASE FALSE; RESET") {
     GEN gen;
     std::vector<int> sine;

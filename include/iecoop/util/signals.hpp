@@ -138,9 +138,18 @@ class GEN : public function_block<GEN> {
     std::int64_t position = 0;
     std::int64_t length = 0;
     if (BASE) {
-      length = static_cast<std::int64_t>(PERIOD.count());
-      position =
-          length > 0 ? static_cast<std::int64_t>(static_cast<std::uint32_t>((now - start_).count())) % length : 0;
+      const std::uint32_t period = PERIOD.count();
+      length = period;
+      if (period > 0) {
+        // The period's start moves on by whole periods as they pass, so that the time since it
+        // stays short of TIME's wrap at 49.7 days (where a difference modulo 2^32 would jump).
+        std::uint32_t elapsed = now.count() - start_.count();
+        if (elapsed >= period) {
+          start_ = TIME::from_ticks(start_.count() + elapsed / period * period);
+          elapsed %= period;
+        }
+        position = elapsed;
+      }
     } else {
       length = CYCLES.value();
       if (length > 0) {
