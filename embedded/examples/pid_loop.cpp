@@ -2,6 +2,9 @@
 // 10 ms, the cycle clock set before each call as a task would, holds a first-order plant (a
 // heater and its temperature, simulated in REAL) at its set point: from 20 to 80 degrees with
 // the heater limited to 0..100 %, a set point raised to 90 at 30 s, a loss of heat from 45 s.
+// A CHARCURVE maps the heater's per mille onto a PWM duty, a STATISTICS_INT follows the
+// temperature: integer blocks whose divisions the image must make without libgcc's 64-bit
+// routine (test no_64bit_division).
 // main() prints the temperature every 10 s and checks that the heater hit its limit at the
 // start, that the anti-windup kept the overshoot under one degree, and that the loop settled
 // at the new set point despite the loss.
@@ -18,18 +21,27 @@ using namespace iecoop;
 // PROGRAM TEMP_PRG
 struct TEMP_PRG : program<TEMP_PRG> {
   // VAR
-  PID fbPID;            // fbPID : PID;
-  REAL rTemp;           // rTemp : REAL;            (the sensor)
-  REAL rSetPoint = 80;  // rSetPoint : REAL := 80;
-  REAL rHeater;         // rHeater : REAL;          (the heater, %)
+  PID fbPID;               // fbPID : PID;
+  CHARCURVE fbDuty;        // fbDuty : CHARCURVE;
+  STATISTICS_INT fbStats;  // fbStats : STATISTICS_INT;
+  REAL rTemp;              // rTemp : REAL;            (the sensor)
+  REAL rSetPoint = 80;     // rSetPoint : REAL := 80;
+  REAL rHeater;            // rHeater : REAL;          (the heater, %)
+  INT iDuty;               // iDuty : INT;             (the heater's PWM, 0..255)
+  // aCurve : ARRAY[0..10] OF POINT := [(X:=0,Y:=0), (X:=500,Y:=96), (X:=1000,Y:=255)];
+  ARRAY<POINT, 0, 10> aCurve = {POINT{INT(0), INT(0)}, POINT{INT(500), INT(96)}, POINT{INT(1000), INT(255)}};
   // END_VAR
 
   void body() {
     // fbPID(ACTUAL := rTemp, SET_POINT := rSetPoint, KP := 6.0, TN := 4.0, TV := 0.5,
     //       Y_MIN := 0.0, Y_MAX := 100.0);
-    fbPID("ACTUAL"_ = rTemp, "SET_POINT"_ = rSetPoint, "KP"_ = REAL(6.0), "TN"_ = REAL(4.0), "TV"_ = REAL(0.5),
-          "Y_MIN"_ = REAL(0.0), "Y_MAX"_ = REAL(100.0));
+    fbPID("ACTUAL"_ = rTemp, "SET_POINT"_ = rSetPoint, "KP"_ = 6.0, "TN"_ = 4.0, "TV"_ = 0.5, "Y_MIN"_ = 0.0,
+          "Y_MAX"_ = 100.0);
     rHeater = fbPID.Y;  // rHeater := fbPID.Y;
+    // fbDuty(IN := REAL_TO_INT(rHeater * 10.0), N := 3, P := aCurve);   (per mille to the PWM's duty)
+    fbDuty("IN"_ = REAL_TO_INT(rHeater * REAL(10.0)), "N"_ = 3, "P"_ = aCurve);
+    iDuty = fbDuty.OUT;                   // iDuty := fbDuty.OUT;
+    fbStats("IN"_ = REAL_TO_INT(rTemp));  // fbStats(IN := REAL_TO_INT(rTemp));
   }
 };
 
@@ -67,6 +79,8 @@ int main() {
     }
   }
   firmware::print_line("heater at its limit until ", limited_until, " ms; highest before 30 s: ", REAL(highest));
+  firmware::print_line("PWM duty now ", oven.iDuty, "; temperature min ", oven.fbStats.MN.get(), ", max ",
+                       oven.fbStats.MX.get(), ", mean ", oven.fbStats.AVG.get());
   const float error = plant.temperature - 90.0F;
   const bool ok = limited_until > 0 && limited_until < 10000 && highest < 81.0F && error < 0.1F && error > -0.1F &&
                   oven.fbPID.OVERFLOW == FALSE;

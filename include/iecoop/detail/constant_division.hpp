@@ -121,4 +121,14 @@ template <std::uint64_t D>
 #endif
 }
 
+/// n / d truncated toward zero (as ST's integer division), d > 0, through divide_u64: no call of
+/// libgcc's 64-bit division on a 32-bit target, and one 32-bit division where the magnitudes
+/// fit 32 bits (the Util blocks' interpolations, ramps and means).
+[[nodiscard]] constexpr std::int64_t divide_toward_zero(std::int64_t n, std::int64_t d) noexcept {
+  const bool negative = n < 0;
+  const std::uint64_t magnitude = negative ? 0U - static_cast<std::uint64_t>(n) : static_cast<std::uint64_t>(n);
+  const auto quotient = static_cast<std::int64_t>(divide_u64(magnitude, static_cast<std::uint64_t>(d)));
+  return negative ? -quotient : quotient;
+}
+
 }  // namespace iecoop::detail

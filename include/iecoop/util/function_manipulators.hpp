@@ -31,6 +31,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/variables.hpp>
@@ -89,7 +90,7 @@ class CHARCURVE : public function_block<CHARCURVE> {
         // In 64 bits: (IN - X0) * (Y1 - Y0) reaches 65535 * 65535, beyond a DINT.
         const std::int64_t dx = x(i) - x(i - 1);
         const std::int64_t product = static_cast<std::int64_t>(in - x(i - 1)) * (y(i) - y(i - 1));
-        const std::int64_t value = dx == 0 ? y(i - 1) : y(i - 1) + product / dx;
+        const std::int64_t value = dx == 0 ? y(i - 1) : y(i - 1) + detail::divide_toward_zero(product, dx);
         OUT = INT(static_cast<std::int16_t>(value));
         ERR = BYTE(0);
         return;
@@ -157,7 +158,7 @@ class slope_limiter : public function_block<slope_limiter<T>> {
     } else {
       if (direction != carry_.direction) carry_.rest = 0;  // a new stretch: the fraction was for the other way
       carry_.rest += rate * elapsed;
-      steps = carry_.rest / base;
+      steps = static_cast<std::int64_t>(detail::divide_u64(static_cast<std::uint64_t>(carry_.rest), base));
       carry_.rest -= steps * base;
     }
     carry_.direction = direction;

@@ -32,6 +32,7 @@
 #include <type_traits>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/variables.hpp>
@@ -224,7 +225,7 @@ class statistics_of : public function_block<statistics_of<T>> {
     ++count_;
     if constexpr (integral) {
       sum_ += IN.value();
-      AVG = T(static_cast<std::int16_t>(sum_ / static_cast<std::int64_t>(count_)));
+      AVG = T(static_cast<std::int16_t>(detail::divide_toward_zero(sum_, static_cast<std::int64_t>(count_))));
     } else {
       sum_ += static_cast<double>(IN);
       AVG = T(static_cast<float>(sum_ / static_cast<double>(count_)));

@@ -21,6 +21,7 @@
 #include <cstdint>
 
 #include <iecoop/config.hpp>
+#include <iecoop/detail/constant_division.hpp>
 #include <iecoop/pou/call_interface.hpp>
 #include <iecoop/pou/function_block.hpp>
 #include <iecoop/pou/variables.hpp>
@@ -165,10 +166,10 @@ class GEN : public function_block<GEN> {
     const std::int64_t a = AMPLITUDE.value();
     const bool first_half = 2 * t < period;
     switch (MODE) {
-      case GEN_MODE::TRIANGLE: return first_half ? -a + 4 * a * t / period : 3 * a - 4 * a * t / period;
-      case GEN_MODE::TRIANGLE_POS: return first_half ? 2 * a * t / period : 2 * a - 2 * a * t / period;
-      case GEN_MODE::SAWTOOTH_RISE: return -a + 2 * a * t / period;
-      case GEN_MODE::SAWTOOTH_FALL: return a - 2 * a * t / period;
+      case GEN_MODE::TRIANGLE: return first_half ? -a + share(4 * a, t, period) : 3 * a - share(4 * a, t, period);
+      case GEN_MODE::TRIANGLE_POS: return first_half ? share(2 * a, t, period) : 2 * a - share(2 * a, t, period);
+      case GEN_MODE::SAWTOOTH_RISE: return -a + share(2 * a, t, period);
+      case GEN_MODE::SAWTOOTH_FALL: return a - share(2 * a, t, period);
       case GEN_MODE::RECTANGLE: return first_half ? -a : a;
       case GEN_MODE::SINUS:
       case GEN_MODE::SINE: return std::llround(static_cast<double>(a) * std::sin(angle(t, period)));
@@ -176,6 +177,10 @@ class GEN : public function_block<GEN> {
       case GEN_MODE::COSINE: return std::llround(static_cast<double>(a) * std::cos(angle(t, period)));
     }
     return 0;
+  }
+  // k t / period, truncated toward zero (no libgcc 64-bit division on a 32-bit core).
+  static std::int64_t share(std::int64_t k, std::int64_t t, std::int64_t period) noexcept {
+    return detail::divide_toward_zero(k * t, period);
   }
   static double angle(std::int64_t t, std::int64_t period) noexcept {
     constexpr double two_pi = 6.283185307179586476925286766559;
@@ -236,7 +241,7 @@ class FREQ_MEASURE : public function_block<FREQ_MEASURE> {
         std::uint64_t total = 0;
         for (int i = 1; i <= periods; ++i) total += durations_[static_cast<std::size_t>((next_ + most - i) % most)];
         if (total > 0) {  // (two edges in one cycle's calls are no period)
-          average_ = total / static_cast<std::uint64_t>(periods);
+          average_ = detail::divide_u64(total, static_cast<std::uint64_t>(periods));
           OUT = REAL(static_cast<float>(static_cast<double>(periods) * 1e9 / static_cast<double>(total)));
         }
       }
