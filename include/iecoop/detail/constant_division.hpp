@@ -121,14 +121,28 @@ template <std::uint64_t D>
 #endif
 }
 
-/// n / d truncated toward zero (as ST's integer division), d > 0, through divide_u64: no call of
-/// libgcc's 64-bit division on a 32-bit target, and one 32-bit division where the magnitudes
-/// fit 32 bits (the Util blocks' interpolations, ramps and means).
-[[nodiscard]] constexpr std::int64_t divide_toward_zero(std::int64_t n, std::int64_t d) noexcept {
+/// n / d truncated toward zero (as ST's integer division), d > 0, the way a 32-bit target does
+/// it: one 32-bit division where the magnitudes fit 32 bits, else divide_by_steps. (Tested on
+/// the host against `/`.)
+[[nodiscard]] constexpr std::int64_t divide_toward_zero_portable(std::int64_t n, std::int64_t d) noexcept {
   const bool negative = n < 0;
   const std::uint64_t magnitude = negative ? 0U - static_cast<std::uint64_t>(n) : static_cast<std::uint64_t>(n);
-  const auto quotient = static_cast<std::int64_t>(divide_u64(magnitude, static_cast<std::uint64_t>(d)));
-  return negative ? -quotient : quotient;
+  const auto divisor = static_cast<std::uint64_t>(d);
+  const std::uint64_t quotient = (magnitude >> 32) == 0 && (divisor >> 32) == 0
+                                     ? static_cast<std::uint32_t>(magnitude) / static_cast<std::uint32_t>(divisor)
+                                     : divide_by_steps(magnitude, divisor);
+  return negative ? -static_cast<std::int64_t>(quotient) : static_cast<std::int64_t>(quotient);
+}
+
+/// n / d truncated toward zero (as ST's integer division), d > 0, without libgcc's 64-bit
+/// division on a 32-bit target (the Util blocks' interpolations, ramps and means): the
+/// compiler's division on a 64-bit host, else divide_toward_zero_portable.
+[[nodiscard]] constexpr std::int64_t divide_toward_zero(std::int64_t n, std::int64_t d) noexcept {
+#if defined(__SIZEOF_INT128__)
+  return n / d;
+#else
+  return divide_toward_zero_portable(n, d);
+#endif
 }
 
 }  // namespace iecoop::detail
