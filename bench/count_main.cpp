@@ -25,10 +25,7 @@ namespace {
 
 // Makes the compiler assume that memory was read and written here.
 inline void barrier() { asm volatile("" ::: "memory"); }
-template <class T>
-inline void keep(T& value) {
-  asm volatile("" : : "r,m"(&value) : "memory");
-}
+using bench::keep;
 
 template <class Side>
 void workload_scans(std::uint64_t n) {

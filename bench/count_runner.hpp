@@ -1,5 +1,6 @@
-// The main() of the instruction-count programs (count_main.cpp, testing_count.cpp): runs the
-// kernel named on the command line n times, for bench/callgrind.sh, or lists the kernels.
+// The main() of the instruction-count programs (count_main.cpp, testing_count.cpp,
+// util_count.cpp): runs the kernel named on the command line n times, for bench/callgrind.sh, or
+// lists the kernels; and keep(), which their kernels share.
 //
 //   <program> <kernel> <n>      <program> --list
 #pragma once
@@ -11,6 +12,13 @@
 #include <type_traits>
 
 namespace bench {
+
+/// Keeps `value` in memory, as the compiler must assume that it was read and written here (a
+/// block instance stays in memory between calls, as it does in a program).
+template <class T>
+inline void keep(T& value) {
+  asm volatile("" : : "r,m"(&value) : "memory");
+}
 
 /// `kernels`: an array of {const char* name; R (*run)(std::uint64_t n);}. A kernel that returns
 /// a value makes the program's status depend on it, so that the optimiser keeps every cycle.

@@ -23,13 +23,9 @@ using namespace iecoop;
 // What a kernel's loop does besides the block: the cycle clock, 10 ms apart.
 void set_clock(std::uint64_t i) { cycle_clock::set(LTIME::from_ticks(i * 10'000'000U)); }
 
-// Keeps a value alive without letting the compiler see through it: a block's instance is kept
-// after each call, so that its state lives in memory between calls, as it does in a program
-// that a task calls (the twins' too).
-template <class T>
-void keep(const T& value) {
-  asm volatile("" : : "g"(&value) : "memory");
-}
+// A block's instance is kept in memory after each call (bench::keep), as it is in a program
+// that a task calls; the twins' too.
+using bench::keep;
 
 // --- PID and its twin --------------------------------------------------------------------
 

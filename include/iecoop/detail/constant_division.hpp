@@ -105,32 +105,33 @@ template <std::uint64_t D>
   return quotient;
 }
 
-/// floor(n / d) for a divisor known only at run time (d > 0), without libgcc's 64-bit division
-/// routine (700 bytes of flash on a Cortex-M3): the compiler's division on a 64-bit host; on a
-/// 32-bit target one 32-bit division where both fit 32 bits, else divide_by_steps. For the
-/// scheduler's rare paths (the releases a late task missed, a freewheeling task's pause), not
-/// for a loop.
-[[nodiscard]] constexpr std::uint64_t divide_u64(std::uint64_t n, std::uint64_t d) noexcept {
-#if defined(__SIZEOF_INT128__)
-  return n / d;
-#else
+/// floor(n / d), d > 0, the way a 32-bit target does it: one 32-bit division where both fit 32
+/// bits, else divide_by_steps.
+[[nodiscard]] constexpr std::uint64_t divide_u64_portable(std::uint64_t n, std::uint64_t d) noexcept {
   if ((n >> 32) == 0 && (d >> 32) == 0) {
     return static_cast<std::uint32_t>(n) / static_cast<std::uint32_t>(d);
   }
   return divide_by_steps(n, d);
+}
+/// floor(n / d) for a divisor known only at run time (d > 0), without libgcc's 64-bit division
+/// routine (700 bytes of flash on a Cortex-M3): the compiler's division on a 64-bit host, else
+/// divide_u64_portable. For the scheduler's rare paths (the releases a late task missed, a
+/// freewheeling task's pause) and the Util blocks' divisions, whose values mostly fit 32 bits;
+/// a quotient of wider values takes 64 steps.
+[[nodiscard]] constexpr std::uint64_t divide_u64(std::uint64_t n, std::uint64_t d) noexcept {
+#if defined(__SIZEOF_INT128__)
+  return n / d;
+#else
+  return divide_u64_portable(n, d);
 #endif
 }
 
 /// n / d truncated toward zero (as ST's integer division), d > 0, the way a 32-bit target does
-/// it: one 32-bit division where the magnitudes fit 32 bits, else divide_by_steps. (Tested on
-/// the host against `/`.)
+/// it: divide_u64_portable of the magnitudes. (Tested on the host against `/`.)
 [[nodiscard]] constexpr std::int64_t divide_toward_zero_portable(std::int64_t n, std::int64_t d) noexcept {
   const bool negative = n < 0;
   const std::uint64_t magnitude = negative ? 0U - static_cast<std::uint64_t>(n) : static_cast<std::uint64_t>(n);
-  const auto divisor = static_cast<std::uint64_t>(d);
-  const std::uint64_t quotient = (magnitude >> 32) == 0 && (divisor >> 32) == 0
-                                     ? static_cast<std::uint32_t>(magnitude) / static_cast<std::uint32_t>(divisor)
-                                     : divide_by_steps(magnitude, divisor);
+  const std::uint64_t quotient = divide_u64_portable(magnitude, static_cast<std::uint64_t>(d));
   return negative ? -static_cast<std::int64_t>(quotient) : static_cast<std::int64_t>(quotient);
 }
 
