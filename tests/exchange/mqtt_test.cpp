@@ -195,6 +195,8 @@ TEST_SUITE("MQTT bridge") {
     CHECK(sub.wait_for("plant/line1/status online"));
     cycle(plc);  // cycle 0
     CHECK(sub.wait_for("plant/line1/IO_PRG/tDelay/ET "));
+    CHECK(sub.wait_for(
+        "plant/line1/IO_PRG/fbRamp/OUT {\"value\":0"));  // the last pin of the last channel: all of cycle 0 is in
     const std::string first = sub.output();
     CHECK(first.find("plant/line1/IO_PRG/bStart {\"value\":true,\"type\":\"BOOL\",\"cycle\":0}\n") !=
           std::string::npos);
