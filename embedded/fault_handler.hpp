@@ -16,7 +16,18 @@
 namespace firmware {
 
 [[noreturn]] inline void report_fault_and_stop(const iecoop::fault_info& fault) noexcept {
-  print_line("iecoop fault: ", iecoop::to_string(fault.kind), ": ", fault.message);
+  put("iecoop fault: ");
+  put(iecoop::to_string(fault.kind));
+  put(": ");
+  put(fault.message);
+  // The POU the fault names: the program that ran, or the one the fault is about (a PROGRAM
+  // used while stopped: the short message of a build for size names it only there).
+  if (fault.pou != nullptr) {
+    put(" (pou ");
+    put(fault.pou);
+    put(")");
+  }
+  put("\n");
   end(exit_status::iecoop_fault);
 }
 

@@ -3,15 +3,17 @@
 #
 #   cmake -DCHECK=check_symbols.cmake -DNM=<nm> -DELF=<leaky image> -DEXPECT=<regex> -P expect_check_fails.cmake
 #   cmake -DCHECK=check_divisions.cmake -DOBJDUMP=<objdump> -DELF=<leaky image> -DEXPECT=<regex> -P ...
+#   cmake -DCHECK=check_ram.cmake -DSIZE=<size> -DELF=<image> -DBUDGET=<too few bytes> -DEXPECT=<regex> -P ...
 cmake_minimum_required(VERSION 3.25)
 execute_process(
-  COMMAND ${CMAKE_COMMAND} -DNM=${NM} -DOBJDUMP=${OBJDUMP} -DELF=${ELF} -P ${CMAKE_CURRENT_LIST_DIR}/${CHECK}
+  COMMAND ${CMAKE_COMMAND} -DNM=${NM} -DOBJDUMP=${OBJDUMP} -DSIZE=${SIZE} -DBUDGET=${BUDGET} -DELF=${ELF}
+          -P ${CMAKE_CURRENT_LIST_DIR}/${CHECK}
   OUTPUT_VARIABLE output
   ERROR_VARIABLE errors
   RESULT_VARIABLE status)
 message("${output}${errors}")
 if(status EQUAL 0)
-  message(FATAL_ERROR "${CHECK} passed ${ELF}, which links '${EXPECT}' on purpose")
+  message(FATAL_ERROR "${CHECK} passed ${ELF}, which it must reject ('${EXPECT}')")
 endif()
 if(NOT errors MATCHES "${EXPECT}")
   message(FATAL_ERROR "${CHECK} failed on ${ELF}, but did not name '${EXPECT}'")

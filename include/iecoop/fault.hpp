@@ -45,7 +45,9 @@ enum class fault_kind : std::uint8_t {
 /// name the task whose cycle was running and the program it was calling when the fault
 /// happened (nullptr outside a task cycle, and for a fault of the task itself, such as a
 /// watchdog, `pou`). Both are set by the application's scheduler (fault_context). A fault of
-/// kind lifecycle names in `pou` the block it is about (its message is a constant text).
+/// kind lifecycle names in `pou` the block it is about (its message is a constant text), and so
+/// does a fault about a PROGRAM's or a global variable list's one instance (a second instance;
+/// one used while its application is stopped or that no application lists).
 struct fault_info {
   fault_kind kind;
   const char* message;
@@ -126,8 +128,8 @@ namespace detail {
 inline fault_handler current_fault_handler = &default_fault_handler;
 /// The context outside every scope: nothing runs.
 inline fault_context outside_cycles{};
-/// The context now: the innermost scope's. A pointer, so that a task cycle makes its task's
-/// context (kept with the task) current with one store and gives the previous one back with
+/// The context now: the innermost scope's. A pointer, so that a task cycle makes its context
+/// (a local of the cycle's start) current with one store and gives the previous one back with
 /// another; a program's name is written into it as the cycle calls the program.
 inline fault_context* current_fault_context = &outside_cycles;
 

@@ -26,6 +26,7 @@ class fault_recorder {
   int count = 0;
   iecoop::fault_kind last_kind{};
   std::string last_message;
+  std::string last_pou;  // "" where the fault names none
 
  private:
   static fault_recorder*& current() {
@@ -37,6 +38,7 @@ class fault_recorder {
     ++self->count;
     self->last_kind = fault.kind;
     self->last_message = fault.message;
+    self->last_pou = fault.pou != nullptr ? fault.pou : "";
   }
 
   iecoop::fault_handler previous_;

@@ -43,6 +43,7 @@ TEST_SUITE("global variable lists") {
     CHECK(faults.count == 1);
     CHECK(faults.last_kind == fault_kind::duplicate_globals);
     CHECK(faults.last_message.starts_with("GVL_Test: a global variable list has exactly one instance"));
+    CHECK(faults.last_pou == "GVL_Test");  // the fault's pou names the list it is about
     CHECK(&GVL_Test::instance() == &first);
     CHECK(std::string(to_string(fault_kind::duplicate_globals)) == "second instance of a global variable list");
   }
@@ -85,6 +86,7 @@ TEST_SUITE("global variable lists") {
       CHECK(faults.last_message ==
             "GVL_Test: used while its application is stopped (before start() or after stop()); start() constructs it "
             "— a scratch instance stands in");
+      CHECK(faults.last_pou == "GVL_Test");
       plc.start();
       CHECK(&GVL_Test::instance() == &plc.get<GVL_Test>());
       CHECK(faults.count == 1);
@@ -107,10 +109,12 @@ TEST_SUITE("global variable lists") {
           "MODE_PRG: no task of an application calls this PROGRAM and no instance of it is declared; name it in a "
           "task of the application, as in application{task<MODE_PRG>{\"Main\", cyclic{\"T#10ms\"_iec}, 1}} (or "
           "declare its one instance yourself); a scratch instance stands in");
+    CHECK(faults.last_pou == "MODE_PRG");
     MODE_PRG first;
     MODE_PRG second;
     CHECK(faults.last_kind == fault_kind::duplicate_program);
     CHECK(faults.last_message.starts_with("MODE_PRG: a PROGRAM has exactly one instance"));
+    CHECK(faults.last_pou == "MODE_PRG");
   }
 
   TEST_CASE("a program's VAR_EXTERNAL names the lists it uses; the application that lists them runs it") {

@@ -30,10 +30,14 @@ namespace iecoop::detail {
  * O(N^2). Tasks are kept as the smallest unsigned type that holds N: the queues of three
  * tasks take 16 bytes (400 with a queue per priority and std::size_t indices, on a 32-bit core).
  */
+/// The smallest unsigned type that holds the indices 0..N of N tasks (N meaning none).
+template <std::size_t N>
+using task_index_t =
+    std::conditional_t<(N < 0xFFU), std::uint8_t, std::conditional_t<(N < 0xFFFFU), std::uint16_t, std::size_t>>;
+
 template <std::size_t N>
 class ready_queues {
-  using index_type =
-      std::conditional_t<(N < 0xFFU), std::uint8_t, std::conditional_t<(N < 0xFFFFU), std::uint16_t, std::size_t>>;
+  using index_type = task_index_t<N>;
 
  public:
   static constexpr std::size_t none = N;

@@ -16,20 +16,31 @@ namespace iecoop::detail {
 template <class T>
 inline int listed_by_applications = 0;
 
-/// The fault messages of single_instance<Self, ...>, naming Self and the fix. Built for size
-/// (-Os: __OPTIMIZE_SIZE__, as a firmware is), each says the rule and the fix in fewer words:
-/// every PROGRAM and list has its own copy of each, 550 bytes of flash a PROGRAM otherwise.
+/// The fault messages of single_instance<Self, ...>: the rule and the fix; the fault's pou
+/// names Self. Built for size (-Os: __OPTIMIZE_SIZE__, as a firmware is), each is one text for
+/// every PROGRAM and list, in fewer words, which names Self only through the pou (a text that
+/// named it would be a copy per PROGRAM: 550 bytes of flash each in full, 180 in short).
+/// Otherwise each names Self twice, in the rule and in the fix.
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr char unlisted_program_text[] =
+    "PROGRAM (the pou) in no task; name it in a task<...>; a scratch instance stands in";
+inline constexpr char unlisted_list_text[] =
+    "global variable list (the pou) in no application; add globals<...>; a scratch instance stands in";
+inline constexpr char not_started_text[] =
+    "the pou is used while its application is stopped; start() constructs it; a scratch instance stands in";
+inline constexpr char duplicate_text[] = "a second instance of the pou, not registered; the application owns the one";
+
+template <class Self, bool List>
+struct single_instance_messages {
+  static constexpr const char* unlisted() noexcept { return List ? unlisted_list_text : unlisted_program_text; }
+  static constexpr const char* not_started() noexcept { return not_started_text; }
+  static constexpr const char* duplicate() noexcept { return duplicate_text; }
+};
+#else
 template <class Self, bool List>
 struct single_instance_messages {
   static constexpr std::string_view name = short_type_name<Self>();
-#if defined(__OPTIMIZE_SIZE__)
-  static constexpr std::string_view unlisted =
-      List ? ": no application lists it; add globals<" : ": no task calls this PROGRAM; name it in a task<";
-  static constexpr std::string_view unlisted_end = "> (a scratch instance stands in)";
-  static constexpr std::string_view not_started = ": used while its application is stopped; start() constructs it";
-  static constexpr std::string_view duplicate = ": a second instance, not registered; the application owns the one";
-#else
-  static constexpr std::string_view unlisted =
+  static constexpr std::string_view unlisted_rule =
       List ? ": no application lists this global variable list in globals<...> and no instance of it is declared; "
              "add it to the application, as in application{..., globals<"
            : ": no task of an application calls this PROGRAM and no instance of it is declared; name it in a "
@@ -38,19 +49,28 @@ struct single_instance_messages {
       List ? ">{}} (or declare its one instance yourself); a scratch instance stands in"
            : ">{\"Main\", cyclic{\"T#10ms\"_iec}, 1}} (or declare its one instance yourself); a scratch instance "
              "stands in";
-  static constexpr std::string_view not_started =
+  static constexpr std::string_view not_started_rule =
       ": used while its application is stopped (before start() or after stop()); start() constructs it — a scratch "
       "instance stands in";
-  static constexpr std::string_view duplicate =
+  static constexpr std::string_view duplicate_rule =
       List ? ": a global variable list has exactly one instance; this second one is not registered (an application "
              "that lists it in globals<...> owns it: do not declare it too)"
            : ": a PROGRAM has exactly one instance; this second one is not registered (an application whose task "
              "calls it owns it: do not declare it too)";
-#endif
-  static constexpr auto unlisted_text = joined_text<name, unlisted, name, unlisted_end>;
-  static constexpr auto not_started_text = joined_text<name, not_started>;
-  static constexpr auto duplicate_text = joined_text<name, duplicate>;
+  static constexpr auto unlisted_text = joined_text<name, unlisted_rule, name, unlisted_end>;
+  static constexpr auto not_started_text = joined_text<name, not_started_rule>;
+  static constexpr auto duplicate_text = joined_text<name, duplicate_rule>;
+  static constexpr const char* unlisted() noexcept { return unlisted_text.data(); }
+  static constexpr const char* not_started() noexcept { return not_started_text.data(); }
+  static constexpr const char* duplicate() noexcept { return duplicate_text.data(); }
 };
+#endif
+
+/// Reports `kind` about the PROGRAM or list `name`: the fault's pou is its name (the task is
+/// the one running), as for a lifecycle fault.
+inline void report_about(fault_kind kind, const char* message, const char* name) {
+  current_fault_handler(fault_info{kind, message, current_fault_context->task, name});
+}
 
 /// How many scratch instances are under construction: while one is, no program or global
 /// variable list (also one nested in it) registers as the live instance of its type.
@@ -70,8 +90,8 @@ class scratch_scope {
  * its type. Constructing a second while the first lives reports `duplicate` (with
  * `duplicate_message`) and leaves the first registered; copies (made by an online change)
  * are not registered. Without an instance, instance() reports fault_kind::invalid_value and
- * returns a scratch instance, which is never registered. Each message names Self and the fix:
- * an application that lists Self but is stopped, or none that lists it.
+ * returns a scratch instance, which is never registered. Each fault names Self in its pou, and
+ * its message says the fix: an application that lists Self but is stopped, or none that lists it.
  */
 template <class Self, fault_kind Duplicate>
 class single_instance {
@@ -81,8 +101,9 @@ class single_instance {
   /// The live instance (or, reporting a fault, a scratch one).
   static Self& instance() {
     if (live_ == nullptr) {
-      fault(fault_kind::invalid_value,
-            listed_by_applications<Self> > 0 ? messages::not_started_text.data() : messages::unlisted_text.data());
+      report_about(fault_kind::invalid_value,
+                   listed_by_applications<Self> > 0 ? messages::not_started() : messages::unlisted(),
+                   short_type_name_c<Self>.data());
       return scratch();
     }
     return *live_;
@@ -94,7 +115,7 @@ class single_instance {
   single_instance() {
     if (scratch_depth > 0) return;
     if (live_ != nullptr) {
-      fault(Duplicate, messages::duplicate_text.data());
+      report_about(Duplicate, messages::duplicate(), short_type_name_c<Self>.data());
       return;
     }
     // The destructor takes the registration back; GCC 12 at -O3 does not see that for an
@@ -115,13 +136,22 @@ class single_instance {
   }
 
  private:
+  // The scratch instance: constructed at its first use, between `enter` and `leave` (members
+  // are constructed in their order), so that it does not register; one static with one guard.
+  struct scratch_enter {
+    scratch_enter() noexcept { ++scratch_depth; }
+  };
+  struct scratch_leave {
+    scratch_leave() noexcept { --scratch_depth; }
+  };
+  struct scratch_made {
+    [[no_unique_address]] scratch_enter enter;
+    Self object;
+    [[no_unique_address]] scratch_leave leave;
+  };
   static Self& scratch() {
-    static Self& instance = []() -> Self& {
-      scratch_scope making;
-      static Self made;
-      return made;
-    }();
-    return instance;
+    static scratch_made made;
+    return made.object;
   }
   static inline Self* live_ = nullptr;
 };

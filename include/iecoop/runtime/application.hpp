@@ -94,7 +94,7 @@ class application {
   /// The scheduler that runs the tasks.
   using scheduler_type = iecoop::scheduler<config::task_count, cycles_type>;
 
-  explicit application(Entries... entries) : scheduler_(config::task_settings_of(entries...), store_) {
+  explicit application(const Entries&... entries) : scheduler_(config::task_settings_of(entries...), store_) {
     static_assert(detail::none<typename config::program_outside_tasks>,
                   "iecoop: a PROGRAM is assigned to no task (the program in none<...>); name it in a task "
                   "(task<PRG>{\"Main\", cyclic{\"T#10ms\"_iec}, 1}) — a program that only other POUs call is "
@@ -162,21 +162,23 @@ class application {
     if constexpr (retain_bytes == 0) {  // no retain memory: nothing to save (and none of its code)
       destroy();
       scheduler_.halt();
-      return;
-    }
-    const std::size_t size = save(retain_kinds::both);
-    retain_size_ = size;
-    own_verdict_ = size > 0 ? detail::check_retained(store_.objects(), retain_kinds::both, retained_image(size))
-                            : detail::retained_verdict::nothing_found(retain_kinds::both);
-    own_order_ = detail::retained_in_construction_order(store_.objects(), retain_kinds::both);
-    const bool saved = size == 0 || storage_.object == nullptr ||
-                       storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size));
-    destroy();
-    scheduler_.halt();
-    if (!saved) {
-      fault(fault_kind::invalid_value,
-            "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or "
-            "with older data)");
+    } else {
+      const std::size_t size = save(retain_kinds::both);
+      memory_.size = size;
+      memory_.own_verdict = size > 0
+                                ? detail::check_retained(store_.objects(), retain_kinds::both, retained_image(size))
+                                : detail::retained_verdict::nothing_found(retain_kinds::both);
+      memory_.own_order = detail::retained_in_construction_order(store_.objects(), retain_kinds::both);
+      const bool saved =
+          size == 0 || memory_.storage.object == nullptr ||
+          memory_.storage.save(memory_.storage.object, std::span<const std::byte>(memory_.bytes.data(), size));
+      destroy();
+      scheduler_.halt();
+      if (!saved) {
+        fault(fault_kind::invalid_value,
+              "the storage did not save the RETAIN/PERSISTENT data; a restart in another process starts without it (or "
+              "with older data)");
+      }
     }
   }
 
@@ -203,23 +205,23 @@ class application {
       publish(status);
       construct(!keep.contains(retain_kind::retain));
       scheduler_.restart();
-      return;
+    } else {
+      const std::size_t size = save(keep);
+      // What the reset keeps, checked on the instances that wrote it, and whether they were
+      // constructed in the image's order (then their next construction takes the values).
+      detail::retained_verdict verdict = size > 0 ? detail::check_retained(store_.objects(), keep, retained_image(size))
+                                                  : detail::retained_verdict::nothing_found(keep);
+      for (const retain_kind k : {retain_kind::retain, retain_kind::persistent}) {
+        if (size == 0) verdict[k] = keep.contains(k) ? retain_load::restored : retain_load::not_kept;
+      }
+      const retain_kinds ordered = detail::retained_in_construction_order(store_.objects(), keep);
+      destroy();
+      iecoop::retain_status status;
+      status.retain = verdict.retain;
+      status.persistent = verdict.persistent;
+      construct_restoring(!verdict.restorable().contains(retain_kind::retain), verdict, ordered, size, status);
+      scheduler_.restart();
     }
-    const std::size_t size = save(keep);
-    // What the reset keeps, checked on the instances that wrote it, and whether they were
-    // constructed in the image's order (then their next construction takes the values).
-    detail::retained_verdict verdict = size > 0 ? detail::check_retained(store_.objects(), keep, retained_image(size))
-                                                : detail::retained_verdict::nothing_found(keep);
-    for (const retain_kind k : {retain_kind::retain, retain_kind::persistent}) {
-      if (size == 0) verdict[k] = keep.contains(k) ? retain_load::restored : retain_load::not_kept;
-    }
-    const retain_kinds ordered = detail::retained_in_construction_order(store_.objects(), keep);
-    destroy();
-    iecoop::retain_status status;
-    status.retain = verdict.retain;
-    status.persistent = verdict.persistent;
-    construct_restoring(!verdict.restorable().contains(retain_kind::retain), verdict, ordered, size, status);
-    scheduler_.restart();
   }
 
   /// What the last start() that constructed the instances, or the last reset(), did with the
@@ -322,34 +324,27 @@ class application {
   /// the instances (a controller restart, possibly of another process). Must outlive its use.
   /// Where the storage has them, start() uses its previous image (RetainStorageWithPrevious)
   /// for a damaged one, sets a rejected image aside (RetainStorageSetAside) and tells an image
-  /// too large for the retain memory (RetainStorageSized).
+  /// too large for the retain memory (RetainStorageSized). An application without retain
+  /// memory (retain_capacity<0>) would save nothing: it does not compile.
   template <RetainStorage S>
   void use_storage(S& storage) noexcept {
-    storage_ = storage_binding{};
-    storage_.object = &storage;
-    storage_.save = [](void* s, std::span<const std::byte> data) { return static_cast<S*>(s)->save(data); };
-    storage_.load = [](void* s, std::span<std::byte> buffer) {
-      return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer));
-    };
-    if constexpr (RetainStorageWithPrevious<S>) {
-      storage_.load_previous = [](void* s, std::span<std::byte> buffer) {
-        return static_cast<std::size_t>(static_cast<S*>(s)->load_previous(buffer));
-      };
-    }
-    if constexpr (RetainStorageSetAside<S>) {
-      storage_.set_aside = [](void* s) { return static_cast<S*>(s)->set_aside(); };
-    }
-    if constexpr (RetainStorageSized<S>) {
-      storage_.stored_size = [](void* s) { return static_cast<std::size_t>(static_cast<const S*>(s)->stored_size()); };
-    }
+    static_assert(retain_bytes > 0,
+                  "iecoop: an application without retain memory (retain_capacity<0>) saves nothing to a storage; give "
+                  "it retain_capacity<N>{} with N at least application::retain_bytes_needed(), or attach no storage");
+    if constexpr (retain_bytes > 0) bind_storage(storage);
   }
 
   /// Saves the RETAIN and PERSISTENT values to the attached storage now (as TwinCAT's
   /// FB_WritePersistentData). FALSE without storage, instances or room.
   bool save_retained() {
-    if (storage_.object == nullptr || !constructed_) return false;
-    const std::size_t size = save(retain_kinds::both);
-    return size > 0 && storage_.save(storage_.object, std::span<const std::byte>(retain_memory_.data(), size));
+    if constexpr (retain_bytes == 0) {
+      return false;  // no retain memory, no storage (use_storage refuses one)
+    } else {
+      if (memory_.storage.object == nullptr || !constructed_) return false;
+      const std::size_t size = save(retain_kinds::both);
+      return size > 0 &&
+             memory_.storage.save(memory_.storage.object, std::span<const std::byte>(memory_.bytes.data(), size));
+    }
   }
 
   /// The processor load freewheeling tasks may use, in percent (CODESYS: 80 by default).
@@ -396,6 +391,29 @@ class application {
     }(typename config::owned_list{});
   }
 
+  template <RetainStorage S>
+  void bind_storage(S& storage) noexcept {
+    memory_.storage = storage_binding{};
+    memory_.storage.object = &storage;
+    memory_.storage.save = [](void* s, std::span<const std::byte> data) { return static_cast<S*>(s)->save(data); };
+    memory_.storage.load = [](void* s, std::span<std::byte> buffer) {
+      return static_cast<std::size_t>(static_cast<S*>(s)->load(buffer));
+    };
+    if constexpr (RetainStorageWithPrevious<S>) {
+      memory_.storage.load_previous = [](void* s, std::span<std::byte> buffer) {
+        return static_cast<std::size_t>(static_cast<S*>(s)->load_previous(buffer));
+      };
+    }
+    if constexpr (RetainStorageSetAside<S>) {
+      memory_.storage.set_aside = [](void* s) { return static_cast<S*>(s)->set_aside(); };
+    }
+    if constexpr (RetainStorageSized<S>) {
+      memory_.storage.stored_size = [](void* s) {
+        return static_cast<std::size_t>(static_cast<const S*>(s)->stored_size());
+      };
+    }
+  }
+
   void construct(bool init_retains) {
     image::clear();
     detail::lifecycle_scope initialising({init_retains, false, false, false});
@@ -427,14 +445,14 @@ class application {
     retain_kinds ordered;
     std::size_t size = 0;
     if constexpr (retain_bytes > 0) {
-      if (retain_size_ > 0) {
+      if (memory_.size > 0) {
         // This application's own last stop(): checked then, on the variables that wrote it.
-        size = retain_size_;
+        size = memory_.size;
         for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
-          if (wanted.contains(kind)) verdict[kind] = own_verdict_[kind];
+          if (wanted.contains(kind)) verdict[kind] = memory_.own_verdict[kind];
         }
-        ordered = own_order_;
-      } else if (storage_.object != nullptr) {
+        ordered = memory_.own_order;
+      } else if (memory_.storage.object != nullptr) {
         size = read_storage(wanted, verdict, status, ordered);
       }
     }
@@ -443,7 +461,7 @@ class application {
     // bInitRetains = FALSE where the RETAIN values are restored, checked before FB_Init runs.
     construct_restoring(!verdict.restorable().contains(retain_kind::retain), verdict, ordered, size, status);
     if (!retain_fits()) return false;
-    retain_size_ = 0;
+    if constexpr (retain_bytes > 0) memory_.size = 0;
     scheduler_.restart();
     return true;
   }
@@ -463,49 +481,50 @@ class application {
     if constexpr (retain_bytes == 0) {  // nothing stored: constructed with the initial values
       publish(status);
       construct(init_retains);
-      return;
-    }
-    const auto objects = store_.objects();
-    const std::span<const std::byte> stored = retained_image(size);
-    const retain_kinds restorable = size > 0 ? verdict.restorable() : retain_kinds::none;
-    const retain_kinds early = restorable & ordered;
-    retain_kinds late = without(restorable, early);
-    status.restored_after_init = !late.empty();
-    publish(status);
-    retain_kinds failed;
-    {
-      const detail::retained_restore_session restoring(objects, early, stored);
-      construct(init_retains);
-      failed = without(restoring.kinds(), restoring.finish());
-    }
-    if (!failed.empty()) {
-      destroy();
-      for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
-        if (failed.contains(kind)) verdict[kind] = retain_load::changed;
-      }
-      late = late | without(early, failed);
-      status.retain = verdict.retain;
-      status.persistent = verdict.persistent;
+    } else {
+      const auto objects = store_.objects();
+      const std::span<const std::byte> stored = retained_image(size);
+      const retain_kinds restorable = size > 0 ? verdict.restorable() : retain_kinds::none;
+      const retain_kinds early = restorable & ordered;
+      retain_kinds late = without(restorable, early);
       status.restored_after_init = !late.empty();
       publish(status);
-      construct(init_retains || failed.contains(retain_kind::retain));
-    }
-    if (!late.empty()) {
-      // Checked again on the instances as they are now, then restored.
-      const detail::retained_verdict found = detail::check_retained(objects, late, stored);
-      (void)detail::restore_checked(objects, found, stored);
-      for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
-        if (late.contains(kind) && found[kind] != retain_load::restored) verdict[kind] = found[kind];
+      retain_kinds failed;
+      {
+        const detail::retained_restore_session restoring(objects, early, stored);
+        construct(init_retains);
+        failed = without(restoring.kinds(), restoring.finish());
       }
-      status.retain = verdict.retain;
-      status.persistent = verdict.persistent;
-      status.restored_after_init = detail::retained_count(objects, found.restorable()) > 0;
-      publish(status);
-    }
-    if (!failed.empty()) {
-      fault(fault_kind::invalid_value,
+      if (!failed.empty()) {
+        destroy();
+        for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+          if (failed.contains(kind)) verdict[kind] = retain_load::changed;
+        }
+        late = late | without(early, failed);
+        status.retain = verdict.retain;
+        status.persistent = verdict.persistent;
+        status.restored_after_init = !late.empty();
+        publish(status);
+        construct(init_retains || failed.contains(retain_kind::retain));
+      }
+      if (!late.empty()) {
+        // Checked again on the instances as they are now, then restored.
+        const detail::retained_verdict found = detail::check_retained(objects, late, stored);
+        (void)detail::restore_checked(objects, found, stored);
+        for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
+          if (late.contains(kind) && found[kind] != retain_load::restored) verdict[kind] = found[kind];
+        }
+        status.retain = verdict.retain;
+        status.persistent = verdict.persistent;
+        status.restored_after_init = detail::retained_count(objects, found.restorable()) > 0;
+        publish(status);
+      }
+      if (!failed.empty()) {
+        fault(
+            fault_kind::invalid_value,
             "the RETAIN/PERSISTENT variables were constructed otherwise than when their values were saved (a "
             "constructor that makes them differently each time); the instances were built again without those values");
+      }
     }
   }
 
@@ -518,7 +537,7 @@ class application {
   }
 
   [[nodiscard]] std::span<const std::byte> retained_image(std::size_t size) const noexcept {
-    return std::span<const std::byte>(retain_memory_.data(), size);
+    return std::span<const std::byte>(memory_.bytes.data(), size);
   }
 
   /// Reads the storage's image into the retain memory and checks it against the variables of
@@ -534,17 +553,17 @@ class application {
         if (wanted.contains(kind)) verdict[kind] = load;
       }
     };
-    std::size_t size = storage_.load(storage_.object, retain_memory_);
-    if (size > retain_memory_.size()) size = 0;
+    std::size_t size = memory_.storage.load(memory_.storage.object, memory_.bytes);
+    if (size > memory_.bytes.size()) size = 0;
     bool previous = false;
     bool rejected = false;  // the current image is set aside
     // The storage's previous image, where the current one is of no use: its size, or 0 if it
     // has none or none intact.
     const auto load_previous = [&]() -> std::size_t {
-      if (storage_.load_previous == nullptr) return 0;
-      const std::size_t older = storage_.load_previous(storage_.object, retain_memory_);
-      if (older == 0 || older > retain_memory_.size() ||
-          !detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), older))) {
+      if (memory_.storage.load_previous == nullptr) return 0;
+      const std::size_t older = memory_.storage.load_previous(memory_.storage.object, memory_.bytes);
+      if (older == 0 || older > memory_.bytes.size() ||
+          !detail::valid_retained_image(std::span<const std::byte>(memory_.bytes.data(), older))) {
         return 0;
       }
       previous = true;
@@ -554,13 +573,14 @@ class application {
       // No current image: none stored, an empty one (its data lost), or one larger than the
       // retain memory. The previous image is the last one there is; only a storage with
       // neither is a first start.
-      if (storage_.stored_size != nullptr && storage_.stored_size(storage_.object) > retain_memory_.size()) {
+      if (memory_.storage.stored_size != nullptr &&
+          memory_.storage.stored_size(memory_.storage.object) > memory_.bytes.size()) {
         mark_all(retain_load::too_large);  // a valid image may be in it, but not one of this application
         rejected = true;
       }
       size = load_previous();
       if (size == 0 && !rejected) return 0;
-    } else if (!detail::valid_retained_image(std::span<const std::byte>(retain_memory_.data(), size))) {
+    } else if (!detail::valid_retained_image(std::span<const std::byte>(memory_.bytes.data(), size))) {
       mark_all(retain_load::damaged);
       rejected = true;
       size = load_previous();
@@ -570,7 +590,7 @@ class application {
         const detail::lifecycle_scope probing({true, false, true, false, true});
         store_.construct_all();
         const detail::retained_verdict found =
-            detail::check_retained(store_.objects(), wanted, std::span<const std::byte>(retain_memory_.data(), size));
+            detail::check_retained(store_.objects(), wanted, std::span<const std::byte>(memory_.bytes.data(), size));
         ordered = detail::retained_in_construction_order(store_.objects(), wanted);
         store_.destroy_all();
         for (const retain_kind kind : {retain_kind::retain, retain_kind::persistent}) {
@@ -584,7 +604,8 @@ class application {
         }
       }
     }
-    if (rejected && storage_.set_aside != nullptr) status.set_aside = storage_.set_aside(storage_.object);
+    if (rejected && memory_.storage.set_aside != nullptr)
+      status.set_aside = memory_.storage.set_aside(memory_.storage.object);
     return size;
   }
 
@@ -604,18 +625,24 @@ class application {
   std::size_t save(retain_kinds kinds) {
     const auto objects = store_.objects();
     if (kinds.empty() || detail::retained_count(objects, kinds) == 0) return 0;
-    return detail::save_retained(objects, kinds, retain_memory_);
+    return detail::save_retained(objects, kinds, memory_.bytes);
   }
 
   store_type store_;
   scheduler_type scheduler_;  // with the task_cycles, which call the programs in store_
-  std::array<std::byte, retain_bytes> retain_memory_{};
-  std::size_t retain_size_ = 0;
-  detail::retained_verdict own_verdict_{};  // the image of the last stop(), checked on the variables that wrote it
-  retain_kinds own_order_{};                // the kinds those variables were constructed in the image's order
+  // The retain memory and what is known of its image; an application without retain memory
+  // (retain_capacity<0>) has none of it: an empty member, no bytes.
+  struct retain_memory {
+    std::array<std::byte, retain_bytes> bytes{};
+    std::size_t size = 0;                    // of the image the last stop() saved in `bytes`
+    detail::retained_verdict own_verdict{};  // that image, checked on the variables that wrote it
+    retain_kinds own_order{};                // the kinds those variables were constructed in the image's order
+    storage_binding storage{};
+  };
+  struct no_retain_memory {};
+  [[no_unique_address]] std::conditional_t<(retain_bytes > 0), retain_memory, no_retain_memory> memory_{};
   std::size_t retain_bytes_needed_ = 0;
   iecoop::retain_status retain_status_{};
-  storage_binding storage_{};
   bool constructed_ = false;
 };
 

@@ -61,7 +61,7 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
   /// called, the outputs they changed staged for the cycle's end. The task's `observers` are
   /// called right before the programs (notify_before) and right after them (notify).
   void begin_cycle(std::size_t index, LTIME now, const cycle_observer_list& observers, std::uint64_t cycle) {
-    io_.read_inputs(Image::inputs());
+    if (driver_.read != nullptr) driver_.read(Image::inputs(), driver_.object);
     cycle_clock::set(now);
     if constexpr (output_bytes == 0) {
       run_programs(index, now, observers, cycle);
@@ -93,20 +93,21 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
         }
       }
     }
-    io_.write_outputs(published_);
+    if (driver_.write != nullptr) driver_.write(published_, driver_.object);
   }
 
   /// Uses `driver` from now on; it must outlive its use.
   template <IoDriver D>
   void connect(D& driver) noexcept {
-    io_ = callback_io{[](std::span<std::byte> in, void* d) { static_cast<D*>(d)->read_inputs(in); },
-                      [](std::span<const std::byte> out, void* d) { static_cast<D*>(d)->write_outputs(out); }, &driver};
-    check_ = [](const void* d) noexcept { return configuration_error_of(*static_cast<const D*>(d)); };
+    driver_.object = &driver;
+    driver_.read = [](std::span<std::byte> in, void* d) { static_cast<D*>(d)->read_inputs(in); };
+    driver_.write = [](std::span<const std::byte> out, void* d) { static_cast<D*>(d)->write_outputs(out); };
+    driver_.check = [](const void* d) noexcept { return configuration_error_of(*static_cast<const D*>(d)); };
   }
 
   /// The connected driver's configuration_error(): nullptr, or why it must not run.
   [[nodiscard]] const char* io_configuration_error() const noexcept {
-    return check_ != nullptr ? check_(io_.context()) : nullptr;
+    return driver_.check != nullptr ? driver_.check(driver_.object) : nullptr;
   }
 
   /// The output area as it is now is what goes out with the next cycle's outputs (what the
@@ -158,8 +159,14 @@ class task_cycles<Image, Store, type_list<Tasks...>> {
   Store& store_;
   std::array<staged_outputs, sizeof...(Tasks)> staged_{};
   std::array<std::byte, output_bytes> published_{};
-  callback_io io_{};  // the connected driver; without one, nothing is read or written
-  const char* (*check_)(const void*) noexcept = nullptr;  // its configuration_error()
+  // The connected driver (without one, nothing is read or written) and its three calls;
+  // not a callback_io, whose input windows (an io_chain's) would be 8 bytes more.
+  struct driver_binding {
+    void* object = nullptr;
+    void (*read)(std::span<std::byte>, void*) = nullptr;
+    void (*write)(std::span<const std::byte>, void*) = nullptr;
+    const char* (*check)(const void*) noexcept = nullptr;  // its configuration_error()
+  } driver_{};
 };
 
 }  // namespace iecoop::detail

@@ -114,7 +114,9 @@ class task_info {
   LTIME start_time_{};
   LTIME last_exec_time_{};
   std::uint64_t cycle_number_ = 0;
-  std::int32_t index_ = -1;
+  // Two bytes (a scheduler has at most 32767 tasks), so that the scheduler's four one-byte
+  // members of task_state fill the four bytes up to the next multiple of 8.
+  std::int16_t index_ = -1;
   bool overran_ = false;          // a release was skipped between the last two cycles' starts
   bool overrun_pending_ = false;  // one was skipped since the last cycle's start
 };
