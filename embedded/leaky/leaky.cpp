@@ -1,8 +1,9 @@
 // A deliberately bad firmware, built only to prove that check_symbols.cmake fails on an image
 // that links what iecoop's firmware must not: compiled once per kind of leak, with
 // LEAKY_HEAP (malloc), LEAKY_NEW (operator new), LEAKY_THROW (a throw, with -fexceptions) or
-// LEAKY_RTTI (typeid, with -frtti); and once, LEAKY_DIVISION, to prove that
-// check_divisions.cmake fails on an image whose code divides 64-bit integers. It never runs.
+// LEAKY_RTTI (typeid, with -frtti); once, LEAKY_DIVISION, to prove that check_divisions.cmake
+// fails on an image whose code divides 64-bit integers; and once, LEAKY_DOUBLE, to prove that
+// check_no_double.cmake fails on an image that computes in double. It never runs.
 //
 // The firmware is linked without a system-call layer and, with the slim package set, without
 // libsupc++: so the heap images bring their own _sbrk (as a firmware with a heap would), and
@@ -55,8 +56,16 @@ volatile std::uint64_t divisor = 7;
 [[gnu::noinline]] std::uint64_t cycle_body() { return dividend / divisor; }
 #endif
 
+#if defined(LEAKY_DOUBLE)
+volatile float reading = 1.5F;
+// What a REAL-only program must not do on a core without a double FPU: compute in double.
+[[gnu::noinline]] int cycle_body() { return static_cast<int>(static_cast<double>(reading) * 3.0); }
+#endif
+
 int main() {
-#if defined(LEAKY_DIVISION)
+#if defined(LEAKY_DOUBLE)
+  sink = cycle_body();
+#elif defined(LEAKY_DIVISION)
   sink = static_cast<int>(cycle_body());
 #elif defined(LEAKY_HEAP)
   void* block = std::malloc(16);

@@ -103,15 +103,24 @@ constexpr auto as_elementary(const T& x) noexcept {
 }
 
 /// Rounds a floating value to To's representation, keeping the low bytes of the result.
+/// A REAL (float) rounds in float arithmetic, an LREAL in long double (float_to_int.hpp).
 template <class Rep, class F>
 constexpr Rep round_to(F x) noexcept {
-  const auto v = static_cast<long double>(x);
-  if constexpr (std::is_same_v<Rep, std::uint64_t>) {
-    // Values between 2^63 and 2^64 need the unsigned range.
-    constexpr long double two63 = 9223372036854775808.0L;
-    if (v >= two63 && v < 2 * two63) return static_cast<std::uint64_t>(v + 0.5L);
+  if constexpr (std::is_same_v<F, float>) {
+    if constexpr (std::is_same_v<Rep, std::uint64_t>) {
+      // Values between 2^63 and 2^64 need the unsigned range; a float there is a whole number.
+      if (x >= 9223372036854775808.0F && x < 18446744073709551616.0F) return whole_float_magnitude(x);
+    }
+    return static_cast<Rep>(round_to_int64(x));
+  } else {
+    const auto v = static_cast<long double>(x);
+    if constexpr (std::is_same_v<Rep, std::uint64_t>) {
+      // Values between 2^63 and 2^64 need the unsigned range.
+      constexpr long double two63 = 9223372036854775808.0L;
+      if (v >= two63 && v < 2 * two63) return static_cast<std::uint64_t>(v + 0.5L);
+    }
+    return static_cast<Rep>(round_to_int64(v));
   }
-  return static_cast<Rep>(round_to_int64(v));
 }
 
 constexpr std::string_view trim(std::string_view s) noexcept {
