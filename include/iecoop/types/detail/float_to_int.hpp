@@ -24,7 +24,7 @@ constexpr std::int64_t trunc_to_int64(long double x) noexcept {
   return static_cast<std::int64_t>(x);
 }
 constexpr std::int64_t trunc_to_int64(double x) noexcept { return trunc_to_int64(static_cast<long double>(x)); }
-/// A whole float of magnitude 2^24 or more (below 2^64), from its bits: its mantissa shifted
+/// A whole float of magnitude 2^23 or more (below 2^64), from its bits: its mantissa shifted
 /// by its exponent. (Not a conversion: libgcc converts a float to a 64-bit integer through
 /// double, and that would bring the double routines back on a core without a double FPU.)
 constexpr std::uint64_t whole_float_magnitude(float x) noexcept {
