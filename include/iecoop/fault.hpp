@@ -147,6 +147,13 @@ class fault_context_scope {
  private:
   fault_context* previous_;
 };
+
+/// Reports `kind` about the POU `name` (a block, a PROGRAM, a global variable list): the
+/// fault's pou is that name, not the program running; its task is the running one. For a
+/// message that is a constant text: the name is not composed into it.
+inline void report_about(fault_kind kind, const char* message, const char* name) {
+  current_fault_handler(fault_info{kind, message, current_fault_context->task, name});
+}
 }  // namespace detail
 
 /// The task and program running now (both nullptr outside a task cycle).

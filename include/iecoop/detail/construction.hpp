@@ -89,8 +89,7 @@ inline lifecycle_tracking& extends_tracking() noexcept {
 /// Reports fault_kind::lifecycle about the block `name`: the fault's text is `message` (a
 /// constant), its pou the block's name, so that a report costs no RAM for a composed text.
 inline void lifecycle_fault(const char* message, const char* name) {
-  fault_info info{fault_kind::lifecycle, message, current_fault_context->task, name};
-  current_fault_handler(info);
+  report_about(fault_kind::lifecycle, message, name);
 }
 
 inline void report_owed(const owed_fb_init& owed) {

@@ -66,12 +66,6 @@ struct single_instance_messages {
 };
 #endif
 
-/// Reports `kind` about the PROGRAM or list `name`: the fault's pou is its name (the task is
-/// the one running), as for a lifecycle fault.
-inline void report_about(fault_kind kind, const char* message, const char* name) {
-  current_fault_handler(fault_info{kind, message, current_fault_context->task, name});
-}
-
 /// How many scratch instances are under construction: while one is, no program or global
 /// variable list (also one nested in it) registers as the live instance of its type.
 inline int scratch_depth = 0;
