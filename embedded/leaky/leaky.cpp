@@ -3,7 +3,9 @@
 // LEAKY_HEAP (malloc), LEAKY_NEW (operator new), LEAKY_THROW (a throw, with -fexceptions) or
 // LEAKY_RTTI (typeid, with -frtti); once, LEAKY_DIVISION, to prove that check_divisions.cmake
 // fails on an image whose code divides 64-bit integers; and once, LEAKY_DOUBLE, to prove that
-// check_no_double.cmake fails on an image that computes in double. It never runs.
+// check_no_double.cmake fails on an image that computes in double; and once, LEAKY_TASK_HOOKS,
+// to prove that check_task_hooks.cmake fails on an image whose application has a
+// freewheeling task and a watchdog. It never runs.
 //
 // The firmware is linked without a system-call layer and, with the slim package set, without
 // libsupc++: so the heap images bring their own _sbrk (as a firmware with a heap would), and
@@ -13,6 +15,10 @@
 #include <cstdint>
 #include <cstdlib>
 #include <typeinfo>
+
+#if defined(LEAKY_TASK_HOOKS)
+#include <iecoop/iecoop.hpp>
+#endif
 
 namespace {
 // volatile: the compiler may not see through it and drop the leak.
@@ -62,8 +68,25 @@ volatile float reading = 1.5F;
 [[gnu::noinline]] int cycle_body() { return static_cast<int>(static_cast<double>(reading) * 3.0); }
 #endif
 
+#if defined(LEAKY_TASK_HOOKS)
+using namespace iecoop;
+struct BACKGROUND_PRG : program<BACKGROUND_PRG> {
+  DINT nCount;
+  void body() { nCount = nCount + 1; }
+};
+// TASK Background (freewheeling, PRIORITY := 31, watchdog T#10ms)
+application plc{
+    task<BACKGROUND_PRG>{"Background", freewheeling{}, 31, watchdog{"T#10ms"_iec}},
+    retain_capacity<0>{},
+};
+#endif
+
 int main() {
-#if defined(LEAKY_DOUBLE)
+#if defined(LEAKY_TASK_HOOKS)
+  plc.start();
+  plc.run_for("T#5ms"_iec);
+  sink = static_cast<int>(BACKGROUND_PRG::instance().nCount > 0);
+#elif defined(LEAKY_DOUBLE)
   sink = cycle_body();
 #elif defined(LEAKY_DIVISION)
   sink = static_cast<int>(cycle_body());

@@ -363,6 +363,31 @@ TEST_SUITE("application: event and freewheeling tasks") {
     bAlarm = FALSE;
   }
 
+  TEST_CASE("a task refers to the hooks its kind and watchdog need, and to no other") {
+    // What a firmware image links of the freewheeling pause and the watchdog check
+    // (embedded/cmake/check_task_hooks.cmake) follows from these pointers.
+    constexpr task<FAST_PRG> cyclic_task{"C", cyclic{"T#1ms"_iec}, 0};
+    constexpr task<FAST_PRG> guarded{"G", cyclic{"T#1ms"_iec}, 0, watchdog{"T#2ms"_iec}};
+    constexpr task<FAST_PRG> free_task{"F", freewheeling{}, 31};
+    constexpr task<FAST_PRG> free_guarded{"FG", freewheeling{}, 31, watchdog{"T#2ms"_iec}};
+    constexpr task<FAST_PRG> event_guarded{"EG", event{bAlarm}, 1, watchdog{"T#2ms"_iec}};
+    static_assert(cyclic_task.settings().hooks == nullptr);
+    static_assert(task<FAST_PRG>{"E", event{bAlarm}, 1}.settings().hooks == nullptr);
+    const auto pause_of = [](const task_settings& s) { return s.hooks != nullptr && s.hooks->pause != nullptr; };
+    const auto watchdog_of = [](const task_settings& s) {
+      return s.hooks != nullptr && s.hooks->watchdog_fault != nullptr && s.hooks->report_watchdog_fault != nullptr;
+    };
+    CHECK((!pause_of(guarded.settings()) && watchdog_of(guarded.settings())));
+    CHECK((pause_of(free_task.settings()) && !watchdog_of(free_task.settings())));
+    CHECK((pause_of(free_guarded.settings()) && watchdog_of(free_guarded.settings())));
+    CHECK((!pause_of(event_guarded.settings()) && watchdog_of(event_guarded.settings())));
+    // The application keeps them as the tasks made them.
+    application plc{task<FAST_PRG>{"F", freewheeling{}, 31, watchdog{"T#2ms"_iec}},
+                    task<SLOW_PRG>{"S", cyclic{"T#1ms"_iec}, 0}};
+    CHECK(plc.task("F").settings().hooks == free_guarded.settings().hooks);
+    CHECK(plc.task("S").settings().hooks == nullptr);
+  }
+
   TEST_CASE("a freewheeling task without execution time runs every millisecond") {
     application plc{task<FAST_PRG>{"Free", freewheeling{}, 31}};
     plc.start();

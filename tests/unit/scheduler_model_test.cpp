@@ -32,6 +32,11 @@ namespace {
 
 using namespace iecoop;
 
+// A program for task<...>{...}, whose settings the test compares with hand-written ones.
+struct HOOKS_PRG : program<HOOKS_PRG> {
+  void body() {}
+};
+
 constexpr std::uint64_t tick_ns = 50'000;  // 50 us
 constexpr std::uint64_t run_ns = 40'000'000;
 constexpr std::size_t max_tasks = 4;
@@ -209,17 +214,31 @@ model_result run_model(const configuration& c) {
 
 // --- The scheduler ----------------------------------------------------------------------
 
-struct recording_cycles {
+// Queued: the scheduler keeps its ready queues even with so few tasks (detail::pick_by_scan,
+// specialised below), so that both ways of picking the next task meet the model.
+template <bool Queued>
+struct recording_cycles_of {
   std::vector<event_record>* trace;
   void begin_cycle(std::size_t task, LTIME now) { trace->push_back({true, task, now.count()}); }
   void end_cycle(std::size_t task, LTIME now) { trace->push_back({false, task, now.count()}); }
 };
+using recording_cycles = recording_cycles_of<false>;
+
+}  // namespace
+
+template <std::size_t N>
+inline constexpr bool iecoop::detail::pick_by_scan<N, recording_cycles_of<true>> = false;
+
+namespace {
+
+static_assert(sizeof(scheduler<4, recording_cycles>) < sizeof(scheduler<4, recording_cycles_of<true>>),
+              "with four tasks the scheduler picks by looking at them, and keeps no ready queues");
 
 LTIME cost_of(std::uint64_t cycle, void* context) {
   return LTIME::from_ticks(static_cast<const task_config*>(context)->costs[cycle % 8]);
 }
 
-template <std::size_t N>
+template <std::size_t N, bool Queued>
 model_result run_scheduler(const configuration& c) {
   model_result out;
   std::array<task_settings, N> settings{};
@@ -231,7 +250,7 @@ model_result run_scheduler(const configuration& c) {
     settings[i].watchdog_time = LTIME::from_ticks(c.task[i].watchdog);
     settings[i].watchdog_sensitivity = c.task[i].sensitivity;
   }
-  scheduler<N, recording_cycles> s{settings, &out.trace};  // recording_cycles{&out.trace}
+  scheduler<N, recording_cycles_of<Queued>> s{settings, &out.trace};  // recording_cycles_of{&out.trace}
   for (std::size_t i = 0; i < N; ++i) s.task(i).model_execution_time(&cost_of, const_cast<task_config*>(&c.task[i]));
   s.start();
   s.run_until(LTIME::from_ticks(run_ns));
@@ -241,12 +260,13 @@ model_result run_scheduler(const configuration& c) {
   return out;
 }
 
+template <bool Queued>
 model_result run_scheduler(const configuration& c) {
   switch (c.tasks) {
-    case 1: return run_scheduler<1>(c);
-    case 2: return run_scheduler<2>(c);
-    case 3: return run_scheduler<3>(c);
-    default: return run_scheduler<4>(c);
+    case 1: return run_scheduler<1, Queued>(c);
+    case 2: return run_scheduler<2, Queued>(c);
+    case 3: return run_scheduler<3, Queued>(c);
+    default: return run_scheduler<4, Queued>(c);
   }
 }
 
@@ -276,6 +296,28 @@ TEST_SUITE("scheduler") {
     CHECK(s.task(0).statistics().cycles == 3);  // 0, 1 and 2 ms
     CHECK(s.task(1).statistics().cycles == 0);  // never released
     CHECK(s.base_cycle() == LTIME(TIME(1)));
+  }
+
+  TEST_CASE("settings written by hand get the hooks of their kind and watchdog") {
+    std::vector<event_record> trace;
+    std::array<task_settings, 4> settings{};
+    settings[0].interval = LTIME(TIME(1));
+    settings[1].interval = LTIME(TIME(1));
+    settings[1].has_watchdog = true;
+    settings[1].watchdog_time = LTIME(TIME(2));
+    settings[2].kind = task_kind::freewheeling;
+    settings[3].kind = task_kind::freewheeling;
+    settings[3].has_watchdog = true;
+    settings[3].watchdog_time = LTIME(TIME(2));
+    scheduler<4, recording_cycles> s{settings, &trace};
+    CHECK(s.task(0).settings().hooks == nullptr);
+    CHECK(s.task(1).settings().hooks == task<HOOKS_PRG>{"W", cyclic{TIME(1)}, 0, watchdog{TIME(2)}}.settings().hooks);
+    CHECK(s.task(2).settings().hooks == task<HOOKS_PRG>{"F", freewheeling{}, 0}.settings().hooks);
+    CHECK(s.task(3).settings().hooks == task<HOOKS_PRG>{"FW", freewheeling{}, 0, watchdog{TIME(2)}}.settings().hooks);
+    // and the freewheeling task pauses: cycles of no time, so 1 ms apart.
+    s.start();
+    s.run_until(LTIME(TIME(5)));
+    CHECK(s.task(2).statistics().cycles == 5);
   }
 
   TEST_CASE("stepped by hand, as a runner on another clock does") {
@@ -317,17 +359,24 @@ TEST_SUITE("scheduler against a reference model") {
     for (int n = 0; n < 20000; ++n) {
       const configuration c = random_configuration(rng);
       const model_result expected = run_model(c);
-      const model_result actual = run_scheduler(c);
-      const auto mismatch =
-          std::mismatch(expected.trace.begin(), expected.trace.end(), actual.trace.begin(), actual.trace.end());
-      const auto at = static_cast<std::size_t>(mismatch.first - expected.trace.begin());
-      INFO("configuration ", n, " (", c.tasks, " tasks), first difference at event ", at, ": model",
-           describe(expected.trace, at), " | scheduler", describe(actual.trace, at));
-      REQUIRE(expected.trace == actual.trace);
-      REQUIRE(expected.faulted_task == actual.faulted_task);
+      // Every configuration on both ways of picking the next task: looking at each task, and
+      // the ready queues (a scheduler with more than four tasks).
+      for (const bool queued : {false, true}) {
+        const model_result actual = queued ? run_scheduler<true>(c) : run_scheduler<false>(c);
+        const auto mismatch =
+            std::mismatch(expected.trace.begin(), expected.trace.end(), actual.trace.begin(), actual.trace.end());
+        const auto at = static_cast<std::size_t>(mismatch.first - expected.trace.begin());
+        INFO("configuration ", n, " (", c.tasks, " tasks, ", queued ? "ready queues" : "picked by looking",
+             "), first difference at event ", at, ": model", describe(expected.trace, at), " | scheduler",
+             describe(actual.trace, at));
+        REQUIRE(expected.trace == actual.trace);
+        REQUIRE(expected.faulted_task == actual.faulted_task);
+        for (std::size_t i = 0; i < c.tasks; ++i) {
+          INFO("task ", i);
+          REQUIRE(same_statistics(expected.statistics[i], actual.statistics[i]));
+        }
+      }
       for (std::size_t i = 0; i < c.tasks; ++i) {
-        INFO("task ", i);
-        REQUIRE(same_statistics(expected.statistics[i], actual.statistics[i]));
         cycles += expected.statistics[i].cycles;
         overrun += expected.statistics[i].overruns > 0 ? 1U : 0U;
       }

@@ -12,6 +12,23 @@
 
 namespace iecoop::detail {
 
+/// Whether a scheduler of N tasks driving `Cycles` finds the task to run by looking at each of
+/// its tasks (N <= 4) instead of keeping ready queues: for so few tasks as fast, and the queues'
+/// code is most of the dispatch's flash on a small core (456 bytes of the three-task firmware
+/// example on a Cortex-M3). A test may specialise it to run the queues with few tasks.
+template <std::size_t N, class Cycles>
+inline constexpr bool pick_by_scan = N <= 4;
+
+/// The ready queues of a scheduler that picks by looking at its tasks: nothing to keep.
+struct no_ready_queues {
+  template <class Before>
+  void release(std::size_t, std::size_t, Before) noexcept {}
+  void begin(std::size_t, std::size_t) noexcept {}
+  void begin_and_end(std::size_t, std::size_t) noexcept {}
+  void end(std::size_t) noexcept {}
+  void clear() noexcept {}
+};
+
 /// The level of `priority` (0 highest .. 31) among the priorities whose bits `present` has:
 /// how many of them are higher (ready_queues keeps one queue per level).
 [[nodiscard]] constexpr std::size_t priority_level(std::uint32_t present, std::uint8_t priority) noexcept {

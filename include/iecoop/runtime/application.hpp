@@ -94,7 +94,8 @@ class application {
   /// The scheduler that runs the tasks.
   using scheduler_type = iecoop::scheduler<config::task_count, cycles_type>;
 
-  explicit application(const Entries&... entries) : scheduler_(config::task_settings_of(entries...), store_) {
+  explicit application(const Entries&... entries)
+      : scheduler_(detail::hooks_from_tasks, config::task_settings_of(entries...), store_) {
     static_assert(detail::none<typename config::program_outside_tasks>,
                   "iecoop: a PROGRAM is assigned to no task (the program in none<...>); name it in a task "
                   "(task<PRG>{\"Main\", cyclic{\"T#10ms\"_iec}, 1}) — a program that only other POUs call is "

@@ -249,14 +249,15 @@ struct configuration {
   static constexpr bool lists =
       [] { return []<class... Ts>(type_list<Ts...>) { return occurs_in<T, Ts...>; }(globals_list{}); }();
 
-  /// The tasks' settings, in configuration order.
-  static std::array<task_settings, task_count> task_settings_of(const Entries&... entries) noexcept {
+  /// The tasks' settings, in configuration order: where each is (in `entries`, which the
+  /// scheduler copies them from once).
+  static std::array<const task_settings*, task_count> task_settings_of(const Entries&... entries) noexcept {
     static_assert(entries_valid);
-    std::array<task_settings, task_count> settings{};
+    std::array<const task_settings*, task_count> settings{};
     std::size_t i = 0;
     (
         [&] {
-          if constexpr (entry<Entries>::is_task) settings[i++] = entries.settings();
+          if constexpr (entry<Entries>::is_task) settings[i++] = &entries.settings();
         }(),
         ...);
     return settings;

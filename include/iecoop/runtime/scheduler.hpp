@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include <iecoop/config.hpp>
 #include <iecoop/detail/constant_division.hpp>
@@ -98,12 +99,12 @@ class task_state : public task_info {
   detail::cycle_observer_list observers_;
   std::uint32_t watchdog_streak_ = 0;  // watchdog overruns in a row
 #if UINTPTR_MAX > 0xFFFFFFFFU
-  // 280 bytes on a 64-bit host, not 240: the dispatch loop finds a task by its index, and
-  // GCC 12 recomputes index x 240 (four instructions) or index x 256 (a shift) at each use
-  // of the task, where it keeps index x 280 (one multiply): callgrind's task cycle is 240,
-  // 225 and 218 instructions at 240, 256 and 280 bytes (docs/performance.md "Scheduler").
-  // A 32-bit core keeps its 208 bytes.
-  std::byte pad_for_indexing_[40]{};
+  // 280 bytes on a 64-bit host, not the members' 248: the dispatch loop finds a task by its
+  // index, and GCC 12 recomputes index x 240 (four instructions) or index x 256 (a shift) at
+  // each use of the task, where it keeps index x 280 (one multiply): callgrind's task cycle
+  // was 240, 225 and 218 instructions at 240, 256 and 280 bytes (docs/performance.md
+  // "Scheduler"). A 32-bit core keeps its 208 bytes.
+  std::byte pad_for_indexing_[32]{};
 #endif
 };
 #if UINTPTR_MAX > 0xFFFFFFFFU
@@ -130,6 +131,12 @@ enum class scheduler_state : std::uint8_t {
 };
 
 namespace detail {
+/// The scheduler's constructor for settings made by task<...>{...}, whose hooks are set.
+struct hooks_from_tasks_t {
+  explicit hooks_from_tasks_t() = default;
+};
+inline constexpr hooks_from_tasks_t hooks_from_tasks{};
+
 /// a + b, or LTIME::max() (which the scheduler treats as "never") if that would wrap.
 constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept { return b > LTIME::max() - a ? LTIME::max() : a + b; }
 }  // namespace detail
@@ -159,24 +166,16 @@ class scheduler {
   template <class... Args>
   explicit scheduler(const std::array<task_settings, N>& settings, Args&&... cycles_arguments) noexcept
       : cycles_{static_cast<Args&&>(cycles_arguments)...} {
-    std::uint32_t priorities = 0;  // the priorities the tasks have, as bits
-    for (std::size_t i = 0; i < N; ++i) {
-      task_settings& s = tasks_[i].settings_;
-      s = settings[i];
-      if (s.priority > 31) {
-        fault(fault_kind::invalid_value, "a task priority is 0 (highest) to 31 (lowest); 31 stands in");
-        s.priority = 31;
-      }
-      if (s.kind == task_kind::cyclic && s.interval == LTIME{}) {
-        fault(fault_kind::invalid_value,
-              "a cyclic task needs an interval greater than zero; the task is never released");
-      }
-      tasks_[i].index_ = static_cast<std::int16_t>(i);
-      has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
-      priorities |= std::uint32_t{1} << s.priority;
-    }
-    for (task_state& t : tasks_)
-      t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
+    configure<true>([&settings](std::size_t i) -> const task_settings& { return settings[i]; });
+  }
+  /// The same, for settings that task<...>{...} made (an application's): checked while
+  /// compiling, and their hooks the ones the tasks need — the scheduler refers to no other
+  /// (task_settings::hooks) and carries no run-time check of them.
+  template <class... Args>
+  scheduler(detail::hooks_from_tasks_t, const std::array<const task_settings*, N>& settings,
+            Args&&... cycles_arguments) noexcept
+      : cycles_{static_cast<Args&&>(cycles_arguments)...} {
+    configure<false>([&settings](std::size_t i) -> const task_settings& { return *settings[i]; });
   }
   scheduler(const scheduler&) = delete;
   scheduler& operator=(const scheduler&) = delete;
@@ -275,9 +274,10 @@ class scheduler {
 
   /// The task that gets the processor: the highest priority among those released or under
   /// way; among equals, the one under way before those released, then the earlier release,
-  /// then the first in the configuration. no_task if none (or not running). O(1).
+  /// then the first in the configuration. no_task if none (or not running). O(1) with more than
+  /// four tasks (ready queues), a look at each task with up to four (detail::pick_by_scan).
   [[nodiscard]] std::size_t pick() const noexcept {
-    return state_ == scheduler_state::running ? ready_.pick() : no_task;
+    return state_ == scheduler_state::running ? pick_ready() : no_task;
   }
 
   /// Starts, at now(), a cycle of the released task `index` (as pick() chose it): the cycles'
@@ -349,6 +349,35 @@ class scheduler {
   }
 
  private:
+  // The tasks' settings, settings_of(i) the i-th's.
+  template <bool ByHand, class SettingsOf>
+  void configure(SettingsOf settings_of) noexcept {
+    std::uint32_t priorities = 0;  // the priorities the tasks have, as bits
+    for (std::size_t i = 0; i < N; ++i) {
+      task_settings& s = tasks_[i].settings_;
+      s = settings_of(i);
+      if constexpr (ByHand) {
+        if (s.priority > 31) {
+          fault(fault_kind::invalid_value, "a task priority is 0 (highest) to 31 (lowest); 31 stands in");
+          s.priority = 31;
+        }
+        if (s.kind == task_kind::cyclic && s.interval == LTIME{}) {
+          fault(fault_kind::invalid_value,
+                "a cyclic task needs an interval greater than zero; the task is never released");
+        }
+        // Settings written by hand: the hooks their kind and watchdog need.
+        if (s.hooks == nullptr) s.hooks = detail::hooks_for(s.kind, s.has_watchdog);
+      } else if (s.priority > 31) {
+        s.priority = 31;  // (only where Clang 14 ran task<...>{...} at run time, which reported it)
+      }
+      tasks_[i].index_ = static_cast<std::int16_t>(i);
+      has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
+      priorities |= std::uint32_t{1} << s.priority;
+    }
+    for (task_state& t : tasks_)
+      t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
+  }
+
   // begin_cycle() after the ready queues: the cycle, which takes `cost` of processor time, starts.
   void start_cycle(task_state& t, std::size_t index, LTIME cost) {
     t.released_ = false;
@@ -372,9 +401,25 @@ class scheduler {
     t.remaining_ = LTIME{};
     cycles_.end_cycle(index, now_);
     const LTIME cycle_time = t.record_end(now_);
-    if (t.settings_.kind == task_kind::freewheeling)
-      t.next_release_ = detail::add_saturated(now_, freewheeling_pause(cycle_time));
-    if (t.settings_.has_watchdog) check_watchdog(t, cycle_time);
+    // The freewheeling pause and the watchdog through the task's hooks (task_settings::hooks),
+    // which only the tasks that need them have: an image without such a task links neither.
+    if (const detail::task_hooks* hooks = t.settings_.hooks) finish_cycle_hooked(t, *hooks, cycle_time);
+  }
+
+  // Apart: only the cycles of a freewheeling task or of one with a watchdog come here.
+  [[gnu::noinline]] void finish_cycle_hooked(task_state& t, const detail::task_hooks& hooks, LTIME cycle_time) {
+    if (hooks.pause != nullptr) {
+      unsigned freewheeling_tasks = 0;
+      for (const task_state& u : tasks_) freewheeling_tasks += u.settings_.kind == task_kind::freewheeling ? 1U : 0U;
+      t.next_release_ = detail::add_saturated(now_, hooks.pause(cycle_time, freewheeling_load_, freewheeling_tasks));
+    }
+    if (hooks.watchdog_fault != nullptr &&
+        hooks.watchdog_fault(t.settings_, t.statistics_, t.watchdog_streak_, cycle_time)) {
+      state_ = scheduler_state::exception;
+      faulted_task_ = &t;
+      clear_schedules();
+      hooks.report_watchdog_fault(t.settings_.name);
+    }
   }
 
   // release_due() while running.
@@ -418,46 +463,6 @@ class scheduler {
   }
   std::size_t index_of(const task_state& t) const noexcept { return static_cast<std::size_t>(&t - tasks_.data()); }
 
-  void check_watchdog(task_state& t, LTIME cycle_time) {
-    // The streak is kept apart from the statistics, which a user may reset at any time.
-    task_statistics& s = t.statistics_;
-    if (cycle_time <= t.settings_.watchdog_time) {
-      t.watchdog_streak_ = 0;
-      s.consecutive_watchdog_overruns = 0;
-      return;
-    }
-    ++s.watchdog_overruns;
-    s.consecutive_watchdog_overruns = ++t.watchdog_streak_;
-    const unsigned sensitivity = t.settings_.watchdog_sensitivity;
-    const LTIME watchdog_time = t.settings_.watchdog_time;
-    const bool single_timeout =
-        watchdog_time.count() <= LTIME::max().count() / sensitivity && cycle_time > watchdog_time * sensitivity;
-    if (t.watchdog_streak_ >= sensitivity || single_timeout) {
-      state_ = scheduler_state::exception;
-      faulted_task_ = &t;
-      clear_schedules();
-      fault_context context{t.settings_.name, nullptr, nullptr};  // current_task(): none, as outside a cycle
-      const detail::fault_context_scope in_task(context);
-      fault(fault_kind::watchdog,
-            "a task cycle overran its watchdog (time x sensitivity); the application stopped in exception");
-    }
-  }
-
-  // Not inlined: its divisions by the load are 64-bit, which a 32-bit core makes in software,
-  // and only a freewheeling task's cycle needs them (docs/embedded.md, "64-bit divisions").
-  [[gnu::noinline]] [[nodiscard]] LTIME freewheeling_pause(LTIME cycle_time) const noexcept {
-    std::uint64_t freewheeling_tasks = 0;
-    for (const task_state& t : tasks_) freewheeling_tasks += t.settings_.kind == task_kind::freewheeling ? 1 : 0;
-    const std::uint64_t max_load = freewheeling_load_;  // 1..100
-    // L = max_load / 2 / n percent; pause = cycle x (100 - L) / L = cycle x (200 n - max_load) / max_load.
-    const std::uint64_t numerator = 200 * freewheeling_tasks - max_load;
-    const std::uint64_t whole = detail::divide_u64(cycle_time.count(), max_load);
-    const std::uint64_t rest = cycle_time.count() - whole * max_load;
-    const LTIME pause = LTIME::from_ticks(whole * numerator + detail::divide_u64(rest * numerator, max_load));
-    const LTIME minimum = LTIME(TIME(1));
-    return pause < minimum ? minimum : pause;
-  }
-
   void sample_events() {
     if (!has_event_tasks_) return;
     for (task_state& t : tasks_) {
@@ -466,6 +471,27 @@ class scheduler {
       if (value && !t.event_previous_) release(index_of(t), now_);
       t.event_previous_ = value;
     }
+  }
+
+  // The task to run: with few tasks, the first of the busy ones in dispatch order (pick()'s
+  // rules, detail::pick_by_scan), else the ready queues' choice.
+  [[nodiscard]] std::size_t pick_ready() const noexcept {
+    if constexpr (by_scan) {
+      std::size_t best = no_task;
+      for (std::size_t i = 0; i < N; ++i) {
+        if (tasks_[i].busy() && (best == no_task || goes_before(tasks_[i], tasks_[best]))) best = i;
+      }
+      return best;
+    } else {
+      return ready_.pick();
+    }
+  }
+  // Whether busy task a goes before busy task b, which comes earlier in the configuration:
+  // the higher priority, then the cycle under way, then the earlier release.
+  static bool goes_before(const task_state& a, const task_state& b) noexcept {
+    if (a.level_ != b.level_) return a.level_ < b.level_;
+    if (a.active_ != b.active_) return a.active_;
+    return a.release_time_ < b.release_time_;
   }
 
   void release(std::size_t index, LTIME at) noexcept {
@@ -506,7 +532,7 @@ class scheduler {
     if (state_ != scheduler_state::running) return;
     release_due_now();
     while (state_ == scheduler_state::running) {
-      const std::size_t next = ready_.pick();
+      const std::size_t next = pick_ready();
       if (next == no_task) break;
       task_state& t = tasks_[next];
       if (!t.active_) {
@@ -549,7 +575,8 @@ class scheduler {
 
   Cycles cycles_;
   std::array<task_state, N> tasks_{};
-  detail::ready_queues<N> ready_{};
+  static constexpr bool by_scan = detail::pick_by_scan<N, Cycles>;
+  [[no_unique_address]] std::conditional_t<by_scan, detail::no_ready_queues, detail::ready_queues<N>> ready_{};
   LTIME now_{};
   const task_state* faulted_task_ = nullptr;
   detail::task_index_t<N> running_ = no_task;
