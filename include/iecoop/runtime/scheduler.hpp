@@ -283,7 +283,7 @@ class scheduler {
   /// Starts, at now(), a cycle of the released task `index` (as pick() chose it): the cycles'
   /// begin_cycle() does its work.
   void begin_cycle(std::size_t index) {
-    task_state& t = tasks_[index];
+    task_state& t = task_at(index);
     ready_.begin(index, t.level_);
     start_cycle(t, index, t.cost_of(t.cycle_number_));
   }
@@ -295,7 +295,7 @@ class scheduler {
   // Not inlined: the dispatch loop then inlines finish_cycle() for the cycles that take no
   // time, the common case (GCC inlines one of the two, not both: 229 instructions against 233).
   [[gnu::noinline]] void end_cycle(std::size_t index) {
-    task_state& t = tasks_[index];
+    task_state& t = task_at(index);
     ready_.end(t.level_);
     finish_cycle(t, index);
   }
@@ -304,7 +304,7 @@ class scheduler {
   void finish_cycles() {
     running_ = no_task;
     for (std::size_t i = 0; i < N; ++i) {
-      if (tasks_[i].active_ && state_ == scheduler_state::running) end_cycle(i);
+      if (task_at(i).active_ && state_ == scheduler_state::running) end_cycle(i);
     }
   }
 
@@ -325,15 +325,15 @@ class scheduler {
   [[nodiscard]] static constexpr std::size_t task_count() noexcept { return N; }
   /// The task at `index` in the configuration; an index out of range reports
   /// fault_kind::invalid_value and yields the first task.
-  [[nodiscard]] task_state& task(std::size_t index) noexcept { return tasks_[checked_index(index)]; }
-  [[nodiscard]] const task_state& task(std::size_t index) const noexcept { return tasks_[checked_index(index)]; }
+  [[nodiscard]] task_state& task(std::size_t index) noexcept { return task_at(checked_index(index)); }
+  [[nodiscard]] const task_state& task(std::size_t index) const noexcept { return task_at(checked_index(index)); }
   /// The task called `name`; an unknown name reports fault_kind::invalid_value and yields the first task.
   [[nodiscard]] task_state& task(std::string_view name) noexcept {
     for (task_state& t : tasks_) {
       if (name == t.settings_.name) return t;
     }
     fault(fault_kind::invalid_value, "no task of this name in the application; the first task stands in");
-    return tasks_[0];
+    return task_at(0);
   }
   [[nodiscard]] std::span<task_state, N> tasks() noexcept { return tasks_; }
   [[nodiscard]] std::span<const task_state, N> tasks() const noexcept { return tasks_; }
@@ -354,7 +354,7 @@ class scheduler {
   void configure(SettingsOf settings_of) noexcept {
     std::uint32_t priorities = 0;  // the priorities the tasks have, as bits
     for (std::size_t i = 0; i < N; ++i) {
-      task_settings& s = tasks_[i].settings_;
+      task_settings& s = task_at(i).settings_;
       s = settings_of(i);
       if constexpr (ByHand) {
         if (s.priority > 31) {
@@ -370,7 +370,7 @@ class scheduler {
       } else if (s.priority > 31) {
         s.priority = 31;  // (only where Clang 14 ran task<...>{...} at run time, which reported it)
       }
-      tasks_[i].index_ = static_cast<std::int16_t>(i);
+      task_at(i).index_ = static_cast<std::int16_t>(i);
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
       priorities |= std::uint32_t{1} << s.priority;
     }
@@ -449,7 +449,7 @@ class scheduler {
   // The clock moves forward to t > now_; the cycle left running uses up the time passed.
   void move_clock(LTIME t) noexcept {
     if (running_ != no_task) {
-      task_state& r = tasks_[running_];
+      task_state& r = task_at(running_);
       const LTIME spent = t - now_;
       r.remaining_ = spent < r.remaining_ ? r.remaining_ - spent : LTIME{};
     }
@@ -461,6 +461,12 @@ class scheduler {
     fault(fault_kind::invalid_value, "no task at this index in the application; the first task stands in");
     return 0;
   }
+  // The task at `index` < N, through the array's pointer rather than its operator[]: GCC 12
+  // merges the functions whose code is the same for two values of N (release() is, where up to
+  // four tasks keep no ready queues) and, inlining the merged one into the other scheduler,
+  // warns that the other N's array overruns the object (-Warray-bounds at -O2 and above).
+  task_state& task_at(std::size_t index) noexcept { return tasks_.data()[index]; }
+  const task_state& task_at(std::size_t index) const noexcept { return tasks_.data()[index]; }
   std::size_t index_of(const task_state& t) const noexcept { return static_cast<std::size_t>(&t - tasks_.data()); }
 
   void sample_events() {
@@ -479,7 +485,7 @@ class scheduler {
     if constexpr (by_scan) {
       std::size_t best = no_task;
       for (std::size_t i = 0; i < N; ++i) {
-        if (tasks_[i].busy() && (best == no_task || goes_before(tasks_[i], tasks_[best]))) best = i;
+        if (task_at(i).busy() && (best == no_task || goes_before(task_at(i), task_at(best)))) best = i;
       }
       return best;
     } else {
@@ -495,7 +501,7 @@ class scheduler {
   }
 
   void release(std::size_t index, LTIME at) noexcept {
-    task_state& t = tasks_[index];
+    task_state& t = task_at(index);
     if (t.busy()) {
       t.record_overruns(1);
       return;
@@ -504,8 +510,8 @@ class scheduler {
     t.release_time_ = at;
     t.statistics_.consecutive_overruns = 0;
     ready_.release(index, t.level_, [this](std::size_t a, std::size_t b) {
-      return tasks_[a].release_time_ < tasks_[b].release_time_ ||
-             (tasks_[a].release_time_ == tasks_[b].release_time_ && a < b);
+      return task_at(a).release_time_ < task_at(b).release_time_ ||
+             (task_at(a).release_time_ == task_at(b).release_time_ && a < b);
     });
   }
 
@@ -524,7 +530,7 @@ class scheduler {
   /// if it had not (and the choice is made again, as the cycle's code may have raised an
   /// event); cycles that take no time end at once.
   void process_instant() {
-    if (running_ != no_task && tasks_[running_].remaining_ == LTIME{}) {
+    if (running_ != no_task && task_at(running_).remaining_ == LTIME{}) {
       const std::size_t done = running_;
       running_ = no_task;
       end_cycle(done);
@@ -534,7 +540,7 @@ class scheduler {
     while (state_ == scheduler_state::running) {
       const std::size_t next = pick_ready();
       if (next == no_task) break;
-      task_state& t = tasks_[next];
+      task_state& t = task_at(next);
       if (!t.active_) {
         if (!has_event_tasks_) {
           // Nothing its code does can release a task: a cycle that takes no processor time
@@ -569,7 +575,7 @@ class scheduler {
   [[nodiscard]] LTIME next_instant() const noexcept {
     const LTIME release = next_release();
     if (running_ == no_task) return release;
-    const LTIME end = detail::add_saturated(now_, tasks_[running_].remaining_);
+    const LTIME end = detail::add_saturated(now_, task_at(running_).remaining_);
     return end < release ? end : release;
   }
 
