@@ -51,6 +51,37 @@ namespace iecoop::sfc {
 
 // The elements (steps, transitions, actions) as the chart sees them: sfc/detail/chart_elements.hpp.
 
+namespace detail {
+
+/// The SFC flags a POU writes (CODESYS's implicit variables), in one object: the chart's base,
+/// so that they are the chart's members (chart.SFCInit), and whole, so that the chart tests
+/// those that change a scan with one load of its eight bytes (aligned as that load: a Cortex-M0+
+/// reads an unaligned word byte by byte).
+struct alignas(std::uint64_t) sfc_flags {
+  BOOL SFCInit;               ///< while TRUE: reset to the initial step, no actions run
+  BOOL SFCReset;              ///< while TRUE: reset to the initial step, then the scan goes on
+  BOOL SFCPause;              ///< while TRUE: the chart holds (nothing runs, times stand still)
+  BOOL SFCError;              ///< a step exceeded its max_time; a later timeout waits until reset
+  BOOL SFCEnableLimit{TRUE};  ///< FALSE: maximum times are not checked
+  BOOL SFCQuitError;          ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
+                              ///< active steps' times restart
+  BOOL SFCTip;                ///< in tip mode, a rising edge fires the enabled transitions
+  BOOL SFCTipMode;            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
+
+  /// Whether SFCInit, SFCReset, SFCPause, SFCQuitError or SFCTip is TRUE: one load and a mask.
+  [[nodiscard]] bool any_scan_flag() const noexcept {
+    static_assert(sizeof(BOOL) == 1 && sizeof(sfc_flags) == 8 && std::is_trivially_copyable_v<sfc_flags>);
+    return (std::bit_cast<std::uint64_t>(*this) & scan_flags_mask) != 0;
+  }
+
+ private:
+  // The bytes of SFCInit, SFCReset, SFCPause, SFCQuitError and SFCTip (whatever the byte order).
+  static constexpr std::uint64_t scan_flags_mask =
+      std::bit_cast<std::uint64_t>(std::array<unsigned char, 8>{0xFF, 0xFF, 0xFF, 0, 0, 0xFF, 0xFF, 0});
+};
+
+}  // namespace detail
+
 /**
  * A Sequential Function Chart over the POU `POU`, of the Elements (STEPs, TRANSITIONs), in the
  * scan order given first (sfc::codesys, the default, or sfc::matiec). Declare it as a member of
@@ -62,7 +93,7 @@ namespace iecoop::sfc {
  * SFCTrans.
  */
 template <class POU, class... Elements>
-class chart {
+class chart : public detail::sfc_flags {
   using split = detail::split_order<Elements...>;
   using all = typename split::elements;
 
@@ -269,15 +300,8 @@ class chart {
 
  public:
   // --- SFC flags (CODESYS) ---------------------------------------------------------------
-  BOOL SFCInit;               ///< while TRUE: reset to the initial step, no actions run
-  BOOL SFCReset;              ///< while TRUE: reset to the initial step, then the scan goes on
-  BOOL SFCPause;              ///< while TRUE: the chart holds (nothing runs, times stand still)
-  BOOL SFCError;              ///< a step exceeded its max_time; a later timeout waits until reset
-  BOOL SFCEnableLimit{TRUE};  ///< FALSE: maximum times are not checked
-  BOOL SFCQuitError;          ///< while TRUE: the chart holds and SFCError is reset; on FALSE the
-                              ///< active steps' times restart
-  BOOL SFCTip;                ///< in tip mode, a rising edge fires the enabled transitions
-  BOOL SFCTipMode;            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
+  // SFCInit, SFCReset, SFCPause, SFCError, SFCEnableLimit, SFCQuitError, SFCTip and SFCTipMode
+  // are detail::sfc_flags', the chart's base; the chart writes these:
   read_only<BOOL, detail::engine_access> SFCTrans;          ///< a transition fired in this scan
   read_only<STRING<>, detail::engine_access> SFCErrorStep;  ///< the step that set SFCError
   read_only<STRING<>, detail::engine_access> SFCErrorPOU;   ///< the POU of that step
@@ -293,19 +317,17 @@ class chart {
                   "p.nCount != 0; } (ST: nCount <> 0)");
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
-    // No flag set (the usual scan): one test for all of them.
-    const auto raised = [](bool flag) { return static_cast<unsigned>(flag); };  // | of unsigned, not of bool
-    if (started_ && (raised(SFCInit) | raised(SFCReset) | raised(SFCQuitError) | raised(quit_held_) | raised(SFCPause) |
-                     raised(SFCTip) | raised(tip_previous_)) == 0U) [[likely]] {
+    // No flag set and nothing held (the usual scan): two tests for all of them.
+    if (held_ == 0 && !any_scan_flag()) [[likely]] {
       const TIME elapsed = TIME(now - last_);
       last_ = now;
       detail::engine_access::ref(SFCTrans) = FALSE;
       scan(pou, elapsed, false);
       return;
     }
-    TIME elapsed = started_ ? TIME(now - last_) : TIME{};
+    TIME elapsed = started() ? TIME(now - last_) : TIME{};
     last_ = now;
-    if (!started_ || SFCInit || SFCReset) {
+    if (!started() || SFCInit || SFCReset) {
       restart(pou);
       if (SFCInit) return;
     }
@@ -313,17 +335,17 @@ class chart {
       SFCError = FALSE;
       text(SFCErrorStep, "");
       text(SFCErrorPOU, "");
-      quit_held_ = true;
+      hold(quit_held, true);
       return;
     }
-    if (quit_held_) {  // SFCQuitError fell: the active steps' times start again from 0
-      quit_held_ = false;
+    if (holds(quit_held)) {  // SFCQuitError fell: the active steps' times start again from 0
+      hold(quit_held, false);
       restart_active_times(pou);
       elapsed = TIME{};
     }
     if (SFCPause) return;
-    const bool tip = SFCTip && !tip_previous_;
-    tip_previous_ = SFCTip;
+    const bool tip = SFCTip && !holds(tip_held);
+    hold(tip_held, SFCTip);
     detail::engine_access::ref(SFCTrans) = FALSE;
     scan(pou, elapsed, tip);
   }
@@ -422,7 +444,7 @@ class chart {
 
   // --- Reset ------------------------------------------------------------------------------
   void restart(POU& pou) {
-    started_ = true;
+    hold(not_started, false);
     state_ = next_state_ = 0;  // the initial step's state
     next_entry_ = no_entry;
     each_step([&](auto i) {
@@ -452,7 +474,7 @@ class chart {
     text(SFCErrorStep, "");
     text(SFCErrorPOU, "");
     detail::engine_access::ref(SFCTrans) = FALSE;
-    quit_held_ = false;
+    hold(quit_held, false);
     detail::engine_access::name(SFCCurrentStep, step_name<initial_index>);
   }
 
@@ -1694,9 +1716,15 @@ class chart {
   std::uint8_t state_ = 0;          // compiled engine: the state of the active steps (no_state: the general scan)
   std::uint8_t next_state_ = 0;     // ... the state the scan's transitions lead to (codesys: for the next scan)
   std::uint8_t next_entry_ = 0xFF;  // ... the entry of the one transition that fired (no_entry: none or several)
-  bool started_ = false;
-  bool quit_held_ = false;
-  bool tip_previous_ = false;
+  // What makes a scan other than the usual, besides the flags: not yet started (the first scan
+  // starts the chart), SFCQuitError's hold, SFCTip's value in the last scan (its rising edge).
+  static constexpr std::uint8_t not_started = 1, quit_held = 2, tip_held = 4;
+  std::uint8_t held_ = not_started;
+  [[nodiscard]] bool holds(std::uint8_t what) const noexcept { return (held_ & what) != 0; }
+  void hold(std::uint8_t what, bool on) noexcept {
+    held_ = static_cast<std::uint8_t>(on ? held_ | what : held_ & ~what);
+  }
+  [[nodiscard]] bool started() const noexcept { return !holds(not_started); }
 };
 
 }  // namespace iecoop::sfc
