@@ -320,7 +320,7 @@ class chart : public detail::sfc_flags {
                   "p.nCount != 0; } (ST: nCount <> 0)");
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
-    // No flag set and nothing held (the usual scan): two tests for all of them.
+    // Nothing held and no flag set (the usual scan): the engine's byte, then the five flags.
     if (held_ == 0 && !any_scan_flag()) [[likely]] {
       const TIME elapsed = TIME(now - last_);
       last_ = now;
