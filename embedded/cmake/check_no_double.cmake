@@ -9,22 +9,12 @@
 # double, or libgcc's own float to 64-bit integer (which goes through double), would bring
 # them in. The symbol table is the evidence; the `leaky_double` image proves the check can fail.
 cmake_minimum_required(VERSION 3.25)
-if(NOT DEFINED NM OR NOT DEFINED ELF)
-  message(FATAL_ERROR "usage: cmake -DNM=<nm> -DELF=<image> -P check_no_double.cmake")
-endif()
+set(check_usage "cmake -DNM=<arm-none-eabi-nm> -DELF=<image> -P check_no_double.cmake")
+set(demangle OFF)
+include(${CMAKE_CURRENT_LIST_DIR}/symbol_names.cmake)
 
-execute_process(COMMAND ${NM} ${ELF} OUTPUT_VARIABLE table RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "${NM} failed on ${ELF} (status ${status})")
-endif()
-
-string(REPLACE "\n" ";" lines "${table}")
 set(found "")
-foreach(line IN LISTS lines)
-  if(NOT line MATCHES "^[0-9a-fA-F ]* [A-Za-z] (.+)$")
-    continue()
-  endif()
-  set(name "${CMAKE_MATCH_1}")
+foreach(name IN LISTS symbol_names)
   # __aeabi_dadd, __aeabi_dmul, __aeabi_dcmplt, __aeabi_d2iz, ...; __aeabi_f2d, __aeabi_i2d,
   # __aeabi_ul2d; and their libgcc names (__adddf3, __extendsfdf2, __floatsidf, __fixdfsi, ...).
   if(name MATCHES "^__aeabi_(d[a-z0-9]+|f2d|u?i2d|u?l2d)$" OR name MATCHES "^__[a-z]+df[23]?$"

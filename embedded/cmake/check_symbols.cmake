@@ -8,14 +8,9 @@
 # links without a system-call layer, so most of these already fail the link; this check is
 # the second line, and the `leaky` images prove that it can fail.
 cmake_minimum_required(VERSION 3.25)
-if(NOT DEFINED NM OR NOT DEFINED ELF)
-  message(FATAL_ERROR "usage: cmake -DNM=<nm> -DELF=<image> -P check_symbols.cmake")
-endif()
-
-execute_process(COMMAND ${NM} --demangle ${ELF} OUTPUT_VARIABLE table RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "${NM} failed on ${ELF} (status ${status})")
-endif()
+set(check_usage "cmake -DNM=<arm-none-eabi-nm> -DELF=<image> -P check_symbols.cmake")
+set(demangle ON)
+include(${CMAKE_CURRENT_LIST_DIR}/symbol_names.cmake)
 
 # C names must match exactly; demangled C++ names by their start.
 set(heap_names malloc _malloc_r calloc _calloc_r realloc _realloc_r free _free_r _sbrk _sbrk_r)
@@ -24,14 +19,8 @@ set(exception_names __cxa_allocate_exception __cxa_throw __cxa_rethrow __cxa_beg
 set(cxx_prefixes "operator new" "operator delete" "typeinfo for " "typeinfo name for " "__cxxabiv1::"
                  "vtable for __cxxabiv1::")
 
-string(REPLACE "\n" ";" lines "${table}")
 set(found "")
-foreach(line IN LISTS lines)
-  # "<address> <type> <name>" or, for an undefined symbol, "<spaces> U <name>".
-  if(NOT line MATCHES "^[0-9a-fA-F ]* [A-Za-z] (.+)$")
-    continue()
-  endif()
-  set(name "${CMAKE_MATCH_1}")
+foreach(name IN LISTS symbol_names)
   if(name IN_LIST heap_names)
     list(APPEND found "heap: ${name}")
   elseif(name IN_LIST exception_names)

@@ -9,23 +9,19 @@
 # so it is never inlined away); the `leaky_task_hooks` image, with a freewheeling task and a
 # watchdog, proves the check can fail.
 cmake_minimum_required(VERSION 3.25)
-if(NOT DEFINED NM OR NOT DEFINED ELF)
-  message(FATAL_ERROR "usage: cmake -DNM=<nm> -DELF=<image> -P check_task_hooks.cmake")
-endif()
-
-execute_process(COMMAND ${NM} --demangle ${ELF} OUTPUT_VARIABLE table RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "${NM} failed on ${ELF} (status ${status})")
-endif()
+set(check_usage "cmake -DNM=<arm-none-eabi-nm> -DELF=<image> -P check_task_hooks.cmake")
+set(demangle ON)
+include(${CMAKE_CURRENT_LIST_DIR}/symbol_names.cmake)
 
 set(found "")
-foreach(hook freewheeling_pause watchdog_fault report_watchdog_fault)
-  if(table MATCHES "[A-Za-z] iecoop::detail::${hook}\\(")
-    list(APPEND found "iecoop::detail::${hook}")
+foreach(name IN LISTS symbol_names)
+  if(name MATCHES "^iecoop::detail::(freewheeling_pause|watchdog_fault|report_watchdog_fault)\\(")
+    list(APPEND found "iecoop::detail::${CMAKE_MATCH_1}")
   endif()
 endforeach()
 
 if(found)
+  list(REMOVE_DUPLICATES found)
   list(JOIN found ", " listing)
   message(FATAL_ERROR "task hooks: ${ELF} links ${listing}, which only a freewheeling task or a watchdog needs")
 endif()
