@@ -9,6 +9,7 @@
 #include <iecoop/trace/watch.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -91,7 +92,7 @@ TEST_SUITE("watch list") {
     watch.add("diB", prg.diB);
     watch.attach(plc.task("Fast"));
     std::atomic<bool> done{false};
-    std::uint64_t reads = 0;
+    std::atomic<std::uint64_t> reads{0};
     std::uint64_t torn = 0;
     std::int64_t last = 0;
     std::uint64_t backwards = 0;
@@ -103,13 +104,20 @@ TEST_SUITE("watch list") {
         if (a != view.value(0, 1).i) ++torn;
         if (a < last) ++backwards;
         last = a;
-        ++reads;
+        reads.fetch_add(1);
       }
     });
-    for (int k = 0; k < 200; ++k) plc.run_for(ms(1000));  // 200'000 cycles
+    // 200'000 cycles at least, and on while the reader has not read 100 snapshots yet: on a
+    // loaded machine its thread may start after 200'000 cycles (2 ms in a Release build) have run.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    std::uint64_t batches = 0;
+    while (batches < 200 || (reads.load() < 100 && std::chrono::steady_clock::now() < deadline)) {
+      plc.run_for(ms(1000));
+      ++batches;
+    }
     done.store(true);
     reader.join();
-    CHECK(watch.snapshots() == 200'000);
+    CHECK(watch.snapshots() == batches * 1000U);
     CHECK(reads > 0);
     CHECK(torn == 0);
     CHECK(backwards == 0);
