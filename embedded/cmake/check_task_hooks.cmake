@@ -22,6 +22,7 @@ endforeach()
 
 if(found)
   list(REMOVE_DUPLICATES found)
+  list(SORT found) # nm sorts by mangled name: the order differs from one image to another
   list(JOIN found ", " listing)
   message(FATAL_ERROR "task hooks: ${ELF} links ${listing}, which only a freewheeling task or a watchdog needs")
 endif()
