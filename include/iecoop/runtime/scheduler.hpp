@@ -90,7 +90,8 @@ class task_state : public task_info {
   bool released_ = false;
   bool active_ = false;
   bool event_previous_ = false;
-  std::uint8_t level_ = 0;             // its priority's level in the ready queues (detail::priority_level)
+  std::uint8_t level_ = 0;             // its priority's level in the ready queues (detail::priority_level);
+                                       // 0 where a scan picks the task (pick_by_scan: by priority)
   LTIME next_release_ = LTIME::max();  // cyclic and freewheeling tasks
   LTIME remaining_{};                  // simulated processor time the running cycle still needs
   LTIME cost_constant_{};
@@ -137,8 +138,13 @@ struct hooks_from_tasks_t {
 };
 inline constexpr hooks_from_tasks_t hooks_from_tasks{};
 
-/// a + b, or LTIME::max() (which the scheduler treats as "never") if that would wrap.
-constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept { return b > LTIME::max() - a ? LTIME::max() : a + b; }
+/// a + b, or LTIME::max() (which the scheduler treats as "never") if that would wrap. By the
+/// addition's carry: on a 32-bit core two instructions and a branch (-40 B of the scheduler
+/// example's flash on the Cortex-M3 against comparing with max() - a).
+constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept {
+  const std::uint64_t sum = a.count() + b.count();  // unsigned: wraps
+  return sum < a.count() ? LTIME::max() : LTIME::from_ticks(sum);
+}
 }  // namespace detail
 
 /**
@@ -372,10 +378,12 @@ class scheduler {
       }
       task_at(i).index_ = static_cast<std::int16_t>(i);
       has_event_tasks_ = has_event_tasks_ || s.kind == task_kind::event;
-      priorities |= std::uint32_t{1} << s.priority;
+      if constexpr (!by_scan) priorities |= std::uint32_t{1} << s.priority;
     }
-    for (task_state& t : tasks_)
-      t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
+    if constexpr (!by_scan) {  // the ready queues' levels (a scan compares the priorities)
+      for (task_state& t : tasks_)
+        t.level_ = static_cast<std::uint8_t>(detail::priority_level(priorities, t.settings_.priority));
+    }
   }
 
   // begin_cycle() after the ready queues: the cycle, which takes `cost` of processor time, starts.
@@ -495,7 +503,7 @@ class scheduler {
   // Whether busy task a goes before busy task b, which comes earlier in the configuration:
   // the higher priority, then the cycle under way, then the earlier release.
   static bool goes_before(const task_state& a, const task_state& b) noexcept {
-    if (a.level_ != b.level_) return a.level_ < b.level_;
+    if (a.settings_.priority != b.settings_.priority) return a.settings_.priority < b.settings_.priority;
     if (a.active_ != b.active_) return a.active_;
     return a.release_time_ < b.release_time_;
   }

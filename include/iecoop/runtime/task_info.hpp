@@ -175,8 +175,10 @@ struct PlcTaskSystemInfo {
 };
 
 namespace detail {
-// A duration in TwinCAT's UDINT multiples of 100 ns, stopping at 16#FFFFFFFF.
-[[nodiscard]] constexpr UDINT hundreds_of_ns(LTIME t) noexcept {
+// A duration in TwinCAT's UDINT multiples of 100 ns, stopping at 16#FFFFFFFF. Not inlined:
+// F_GetTaskInfo() converts two durations, and on a 32-bit core each inlined division by the
+// reciprocal is some 40 bytes of flash.
+[[nodiscard, gnu::noinline]] constexpr UDINT hundreds_of_ns(LTIME t) noexcept {
   const std::uint64_t n = divide_by<100>(t.count());  // no 64-bit division on a 32-bit core
   return UDINT(static_cast<std::uint32_t>(n > 0xFFFFFFFFU ? 0xFFFFFFFFU : n));
 }
