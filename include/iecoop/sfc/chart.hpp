@@ -55,11 +55,9 @@ namespace detail {
 
 /// The SFC flags a POU writes (CODESYS's implicit variables), the chart's base: still the
 /// chart's members (chart.SFCInit), and first in the chart's layout, where the test before each
-/// scan reads them (193 instructions a scan against 205 with the same members after the
-/// engine's, g++ 12). (Loading the eight bytes as one word was 7 instructions fewer again, but
-/// made GCC 12 crash — an internal compiler error in tree_could_trap_p — on other code of the
-/// same translation unit with -g -O3 -Wpedantic: bench/count_main.cpp, bench/scheduler_bench.cpp.)
-struct sfc_flags {
+/// scan reads them as one word (177.9 instructions a scan against 184.9 with five tests of
+/// BOOLs, g++ 12; docs/performance.md, "SFC"), aligned: one load also where a load must be.
+struct alignas(std::uint64_t) sfc_flags {
   BOOL SFCInit;               ///< while TRUE: reset to the initial step, no actions run
   BOOL SFCReset;              ///< while TRUE: reset to the initial step, then the scan goes on
   BOOL SFCPause;              ///< while TRUE: the chart holds (nothing runs, times stand still)
@@ -70,18 +68,24 @@ struct sfc_flags {
   BOOL SFCTip;                ///< in tip mode, a rising edge fires the enabled transitions
   BOOL SFCTipMode;            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
 
-  /// Whether SFCInit, SFCReset, SFCPause, SFCQuitError or SFCTip is TRUE. Clang does best with
-  /// one test of their | (240 instructions a scan against 244 with clang++ 14), GCC with the
-  /// branches of || (193 against 203 with g++ 12).
-  [[nodiscard]] bool any_scan_flag() const noexcept {
-#if defined(__clang__)
-    const auto raised = [](bool flag) { return static_cast<unsigned>(flag); };  // | of unsigned, not of bool
-    return (raised(SFCInit) | raised(SFCReset) | raised(SFCPause) | raised(SFCQuitError) | raised(SFCTip)) != 0U;
-#else
-    return SFCInit || SFCReset || SFCPause || SFCQuitError || SFCTip;
-#endif
-  }
+  /// Whether SFCInit, SFCReset, SFCPause, SFCQuitError or SFCTip is TRUE: the eight bytes as
+  /// one word, the five flags' bytes masked (a BOOL is one byte, 0 or 1).
+  [[nodiscard]] bool any_scan_flag() const noexcept { return (std::bit_cast<std::uint64_t>(*this) & scan_flags) != 0; }
+
+ private:
+  // The bytes of SFCInit, SFCReset, SFCPause, SFCQuitError and SFCTip (0, 1, 2, 5, 6), written
+  // out. With the mask computed instead (a constant bit_cast of a sfc_flags), GCC 12.2 crashed
+  // — an internal compiler error in tree_could_trap_p, compiling other code of the translation
+  // unit (bench/scheduler_bench.cpp with -g -O3 and our warnings); the crash came and went with
+  // unrelated changes (a -DFOO=1 on the command line avoided it), so it is GCC's, and this form
+  // compiles every translation unit of the project (docs/performance.md, "SFC").
+  static constexpr std::uint64_t scan_flags =
+      std::endian::native == std::endian::little ? 0x0001'0100'0001'0101U : 0x0101'0100'0001'0100U;
 };
+static_assert(sizeof(sfc_flags) == sizeof(std::uint64_t) && offsetof(sfc_flags, SFCInit) == 0 &&
+                  offsetof(sfc_flags, SFCReset) == 1 && offsetof(sfc_flags, SFCPause) == 2 &&
+                  offsetof(sfc_flags, SFCQuitError) == 5 && offsetof(sfc_flags, SFCTip) == 6,
+              "iecoop: the SFC flags are eight BOOLs of one byte each, in the order scan_flags masks");
 
 }  // namespace detail
 
@@ -745,6 +749,25 @@ class chart : public detail::sfc_flags {
     if (!SFCTipMode || !tip) {
       if (!detail::test<transition_at<Tr>::condition>(pou)) return false;
     }
+    if constexpr (compiled_by_default) {
+      take_transition_apart<Tr>(pou);
+    } else {
+      take_transition<Tr>(pou);  // -Os: inline, 72 bytes less of the SFC example on the Cortex-M3
+    }
+    return true;
+  }
+
+  // Transition Tr fires. Apart, and not inlined, where the build is for speed: a scan in which
+  // nothing fires (the usual one) then makes no call of its own and saves fewer registers
+  // (general engine 305.7 -> 297.1 instructions a scan of the benchmark's chart, g++ 12).
+  template <std::size_t Tr>
+  [[gnu::noinline]] void take_transition_apart(POU& pou) {
+    take_transition<Tr>(pou);
+  }
+  template <std::size_t Tr>
+  void take_transition(POU& pou) {
+    using E = ends<transition_at<Tr>>;
+    constexpr step_set from = sources<Tr>;
     detail::engine_access::ref(SFCTrans) = TRUE;
     for (std::size_t w = 0; w < from.size(); ++w) left_[w] |= from[w];
     if constexpr (order::actions_first) {
@@ -755,7 +778,6 @@ class chart : public detail::sfc_flags {
     [&]<std::size_t... G>(std::index_sequence<G...>) {
       (activate<E::to[G]>(pou), ...);
     }(std::make_index_sequence<E::to.size()>{});
-    return true;
   }
 
   template <std::size_t I>
@@ -1138,11 +1160,12 @@ class chart : public detail::sfc_flags {
   }
 
   // Whether the action of rank K is associated with its steps by N alone (only), by N and L
-  // alone (simple), and with which steps by N.
+  // alone (simple), with which steps by N, and with which by any qualifier.
   struct association_kinds {
     bool only = true;
     bool simple = true;
     step_set with{};
+    step_set any{};
   };
   template <std::size_t I, std::size_t A>
   static constexpr void n_associations_of(association_kinds& k) {
@@ -1151,6 +1174,7 @@ class chart : public detail::sfc_flags {
           [&] {
             if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
               if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
+                detail::set_bit<step_count>(r.any, I);
                 if constexpr (It::kind == qualifier::N) {
                   detail::set_bit<step_count>(r.with, I);
                 } else {
@@ -1175,6 +1199,7 @@ class chart : public detail::sfc_flags {
     static constexpr bool only = found.only;
     static constexpr bool simple = found.simple;
     static constexpr step_set steps = found.with;
+    static constexpr step_set any_steps = found.any;
   };
 
   // Q of a simple action (N and L only): one of its N steps active, or one of its L steps active
@@ -1277,8 +1302,11 @@ class chart : public detail::sfc_flags {
     return result;
   }();
 
-  // The ranks whose body state M calls, in run order: the N-only actions with a step in M, and
-  // the others with a body (their Q tested at run time).
+  // The ranks whose body state M calls, in run order: the N-only actions with a step in M, the
+  // simple ones (N and L) with a step in M and the others with a body, those two with their Q
+  // tested at run time. (A simple action's Q is FALSE where none of its steps is active: its
+  // control is computed before the bodies in the scan its last step was left, and its final
+  // scan runs through final_.)
   template <std::size_t M>
   static constexpr index_list<action_count> bodies_in = [] {
     index_list<action_count> list{};
@@ -1286,7 +1314,10 @@ class chart : public detail::sfc_flags {
       (
           [&] {
             if constexpr (with_body_of<K>) {
-              if (!n_action<K>::only || intersect(n_action<K>::steps, states.sets[M])) list.at[list.size++] = K;
+              const bool possible = n_action<K>::only     ? intersect(n_action<K>::steps, states.sets[M])
+                                    : n_action<K>::simple ? intersect(n_action<K>::any_steps, states.sets[M])
+                                                          : true;
+              if (possible) list.at[list.size++] = K;
             }
           }(),
           ...);
@@ -1300,12 +1331,15 @@ class chart : public detail::sfc_flags {
       bool pending = false;  // a control to compute, or a final scan of the last scan to forget
       for (std::size_t w = 0; w < dirty_.size(); ++w)
         pending = pending || (dirty_[w] | pulsed_[w] | timing_[w] | final_[w]) != 0;
-      if (pending) {
-        detail::for_each_bit<action_count>(take_dirty(), control_n_table, *this, pou, elapsed);
-        if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
-      }
+      if (pending) controls_pending(pou, elapsed);
       run_bodies_in<M>(pou);
     }
+  }
+  // The controls to compute, and the last scan's final scans. Apart, and not inlined: the usual
+  // scan has none.
+  [[gnu::noinline]] void controls_pending(POU& pou, TIME elapsed) {
+    detail::for_each_bit<action_count>(take_dirty(), control_n_table, *this, pou, elapsed);
+    if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
   }
   // The bodies state M calls, in run order (bodies_in<M>).
   template <std::size_t M>
@@ -1365,29 +1399,26 @@ class chart : public detail::sfc_flags {
     return false;
   }();
 
-  // What fire does, in state M: the transitions whose sources are all in M, in their order;
-  // next_state_ gets the state the scan's firings lead to.
+  // What fire does, in state M: the transitions whose sources are all in M, in their order.
+  // Where one fires, next_state_ and next_entry_ get the state and entry the scan's firings
+  // lead to; a scan in which none fires writes neither (they are read only in the scan after a
+  // firing, or after restart(), which sets them).
   template <std::size_t M>
   void fire_in(POU& pou, bool tip) {
-    next_state_ = static_cast<std::uint8_t>(M);
-    next_entry_ = no_entry;
     if (SFCTipMode && !tip) return;
-    unsigned fired = 0;
-    std::uint8_t next = static_cast<std::uint8_t>(M);
-    std::uint8_t entry = no_entry;
+    bool fired = false;
     [&]<std::size_t... J>(std::index_sequence<J...>) {
       (
           [&] {
             constexpr std::size_t Tr = candidates_in<M>.at[J];
             if (try_fire_valid<Tr, false, shares_source<M, Tr>>(pou, tip)) {
-              next = fired++ == 0 ? state_after<M, Tr> : no_state;
-              entry = fired == 1 ? entry_of<M, J> : no_entry;
+              next_state_ = fired ? no_state : state_after<M, Tr>;
+              next_entry_ = fired ? no_entry : entry_of<M, J>;
+              fired = true;
             }
           }(),
           ...);
     }(std::make_index_sequence<candidates_in<M>.size>{});
-    next_state_ = next;
-    next_entry_ = entry;
   }
 
   // --- Entries: the scan after one transition fired, its step changes known ------------------
@@ -1486,26 +1517,32 @@ class chart : public detail::sfc_flags {
   // The codesys scan in state M, after scan_codesys's first lines.
   template <std::size_t M>
   void scan_codesys_in(POU& pou, TIME elapsed, bool tip, bool changed) {
-    if (changed) {  // what apply_pending does, M's steps known: X := _X, T := 0 where activated
-      for (std::size_t w = 0; w < deactivated_.size(); ++w) {
-        for (std::uint64_t m = deactivated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
-          detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).X) = FALSE;
-        }
-        // A step one transition entered and a later one left (several fired): its time restarts.
-        for (std::uint64_t m = activated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
-          detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).T) = TIME{};
-        }
-      }
-      each_step_in<M>([&](auto i) {
-        constexpr std::size_t I = decltype(i)::value;
-        if (detail::test_bit<step_count>(activated_, I)) step_entered<I>(pou);
-      });
-      state_entered<M>();
-    }
+    if (changed) steps_changed_in<M>(pou);
     each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
-    steps_of_scan_in<M>(pou, elapsed, changed);
+    steps_of_scan_in<M>(pou, elapsed, false);  // (the changed steps' actions: marked above)
     iec_actions_in<M>(pou, elapsed);
     fire_in<M>(pou, tip);
+  }
+  // What apply_pending does, M's steps known: X := _X, T := 0 where activated; the actions of
+  // the steps that changed are marked (mark_changed_steps_actions). Apart, and not inlined: the
+  // usual scan changes no step.
+  template <std::size_t M>
+  [[gnu::noinline]] void steps_changed_in(POU& pou) {
+    for (std::size_t w = 0; w < deactivated_.size(); ++w) {
+      for (std::uint64_t m = deactivated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
+        detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).X) = FALSE;
+      }
+      // A step one transition entered and a later one left (several fired): its time restarts.
+      for (std::uint64_t m = activated_[w] & ~states.sets[M][w]; m != 0; m &= m - 1) {
+        detail::engine_access::ref((pou.*members[w * 64 + static_cast<std::size_t>(std::countr_zero(m))]).T) = TIME{};
+      }
+    }
+    each_step_in<M>([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      if (detail::test_bit<step_count>(activated_, I)) step_entered<I>(pou);
+    });
+    state_entered<M>();
+    mark_changed_steps_actions();
   }
 
   // The matiec scan in state M, after scan_matiec's first lines; where a transition fired, the
