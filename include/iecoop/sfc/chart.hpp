@@ -749,7 +749,7 @@ class chart : public detail::sfc_flags {
     if (!SFCTipMode || !tip) {
       if (!detail::test<transition_at<Tr>::condition>(pou)) return false;
     }
-    if constexpr (compiled_by_default) {
+    if constexpr (!built_for_size) {
       take_transition_apart<Tr>(pou);
     } else {
       take_transition<Tr>(pou);  // -Os: inline, 72 bytes less of the SFC example on the Cortex-M3
@@ -1097,10 +1097,11 @@ class chart : public detail::sfc_flags {
     return t;
   }();
 #if defined(__OPTIMIZE_SIZE__)
-  static constexpr bool compiled_by_default = false;  // -Os: the smaller engine
+  static constexpr bool built_for_size = true;  // -Os, as a firmware is built
 #else
-  static constexpr bool compiled_by_default = true;
+  static constexpr bool built_for_size = false;
 #endif
+  static constexpr bool compiled_by_default = !built_for_size;  // -Os: the smaller engine
   static constexpr bool compiled =
       states.complete && (split::engine == detail::engine_choice::compiled ||
                           (split::engine == detail::engine_choice::unset && compiled_by_default));
