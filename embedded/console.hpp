@@ -31,7 +31,18 @@ inline void put(std::string_view text) noexcept {
 #endif
 }
 
+#if defined(__arm__)
+/// The length of NUL-terminated `text`, counted here: GCC would turn the loop into a call of
+/// newlib's strlen (92 bytes of flash on a Cortex-M3, which nothing else in an image may need).
+[[gnu::optimize("no-tree-loop-distribute-patterns")]] inline std::size_t length_of(const char* text) noexcept {
+  std::size_t n = 0;
+  while (text[n] != '\0') ++n;
+  return n;
+}
+inline void put(const char* text) noexcept { put(std::string_view(text, length_of(text))); }
+#else
 inline void put(const char* text) noexcept { put(std::string_view(text)); }
+#endif
 
 /// An IEC integer (INT, DINT, WORD, ...) or BOOL as ST writes it: iecoop::to_text, on the stack.
 /// Not inlined: the text of a 64-bit number divides in software, which the division check

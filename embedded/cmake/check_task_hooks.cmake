@@ -2,12 +2,13 @@
 #
 #   cmake -DNM=<arm-none-eabi-nm> -DELF=<image> -P check_task_hooks.cmake
 #
-# The freewheeling pause (64-bit divisions) and the watchdog check are reached only through
-# the hooks task<...>{...} sets for the tasks that need them (task_settings::hooks): an image
-# whose tasks are all cyclic without a watchdog must link neither — 430 bytes of the scheduler
-# example's flash on the Cortex-M3. The symbol table is the evidence (a hook's address is taken,
-# so it is never inlined away); the `leaky_task_hooks` image, with a freewheeling task and a
-# watchdog, proves the check can fail.
+# The freewheeling pause (64-bit divisions), the watchdog check and what the end of a cycle does
+# with them (end_hooked_cycle) are reached only through the hooks task<...>{...} sets for the
+# tasks that need them (task_settings::hooks): an image whose tasks are all cyclic without a
+# watchdog must link none of them — about 500 bytes of the scheduler example's flash on the
+# Cortex-M3. The symbol table is the evidence (a hook's address is taken, so it is never inlined
+# away); the `leaky_task_hooks` image, with a freewheeling task and a watchdog, proves the check
+# can fail.
 cmake_minimum_required(VERSION 3.25)
 set(check_usage "cmake -DNM=<arm-none-eabi-nm> -DELF=<image> -P check_task_hooks.cmake")
 set(demangle ON)
@@ -15,8 +16,9 @@ include(${CMAKE_CURRENT_LIST_DIR}/symbol_names.cmake)
 
 set(found "")
 foreach(name IN LISTS symbol_names)
-  if(name MATCHES "^iecoop::detail::(freewheeling_pause|watchdog_fault|report_watchdog_fault)\\(")
-    list(APPEND found "iecoop::detail::${CMAKE_MATCH_1}")
+  # (end_hooked_cycle is a template: its name starts with its return type)
+  if(name MATCHES "(^|[ ])iecoop::detail::(freewheeling_pause|watchdog_fault|report_watchdog_fault|end_hooked_cycle)[(<]")
+    list(APPEND found "iecoop::detail::${CMAKE_MATCH_2}")
   endif()
 endforeach()
 

@@ -3,10 +3,10 @@
 #
 #   cmake -DCHECK=check_symbols.cmake -DNM=<nm> -DELF=<leaky image> -DEXPECT=<regex> -P expect_check_fails.cmake
 #   cmake -DCHECK=check_divisions.cmake -DOBJDUMP=<objdump> -DELF=<leaky image> -DEXPECT=<regex> -P ...
-#   cmake -DCHECK=check_ram.cmake -DSIZE=<size> -DELF=<image> -DBUDGET=<too few bytes> -DEXPECT=<regex> -P ...
+#   cmake -DCHECK=check_budget.cmake -DSIZE=<size> -DELF=<image> -DMEMORY=ram -DBUDGET=<too few bytes> -DEXPECT=<regex> -P ...
 cmake_minimum_required(VERSION 3.25)
 execute_process(
-  COMMAND ${CMAKE_COMMAND} -DNM=${NM} -DOBJDUMP=${OBJDUMP} -DSIZE=${SIZE} -DBUDGET=${BUDGET} -DELF=${ELF}
+  COMMAND ${CMAKE_COMMAND} -DNM=${NM} -DOBJDUMP=${OBJDUMP} -DSIZE=${SIZE} -DMEMORY=${MEMORY} -DBUDGET=${BUDGET} -DELF=${ELF}
           -P ${CMAKE_CURRENT_LIST_DIR}/${CHECK}
   OUTPUT_VARIABLE output
   ERROR_VARIABLE errors

@@ -446,6 +446,13 @@ TEST_SUITE("application: tasks by name, faults") {
     CHECK(&plc.task("Nope") == &plc.task(0));
     CHECK(faults.count == 1);
     CHECK(faults.last_kind == fault_kind::invalid_value);
+    // A name is the whole name: neither a prefix nor a longer text, nor one with a NUL inside.
+    CHECK(&plc.task("Slo") == &plc.task(0));
+    CHECK(&plc.task("Slowly") == &plc.task(0));
+    CHECK(&plc.task(std::string_view("Slow\0", 5)) == &plc.task(0));
+    CHECK(faults.count == 4);
+    CHECK(&plc.task(std::string_view("Slow!", 4)) == &plc.task(1));
+    CHECK(faults.count == 4);
   }
 
   TEST_CASE("a task calls its programs in the declared order") {

@@ -84,6 +84,58 @@ TEST_SUITE("STRING and WSTRING") {
     CHECK(STRING<>("\xE4") > STRING<>("z"));  // Latin-1 a-umlaut sorts after ASCII, as unsigned bytes
   }
 
+  TEST_CASE("equality reads both texts once: a prefix, a longer text and a NUL inside a view differ") {
+    // (one pass, character by character, without strlen or memcmp: detail::same_text)
+    const STRING<5> a = "abc";
+    CHECK(a == "abc");
+    CHECK_FALSE(a == "ab");    // a prefix of a
+    CHECK_FALSE(a == "abcd");  // a longer text that a is a prefix of
+    CHECK_FALSE(a == "abd");   // the last character
+    CHECK_FALSE(a == "");      // an empty text
+    CHECK(a != "ab");
+    CHECK_FALSE(a != "abc");
+    CHECK("abc" == a);
+    CHECK("abcd" != a);
+    CHECK(a == std::string_view("abc"));
+    CHECK_FALSE(a == std::string_view("ab"));
+    CHECK_FALSE(a == std::string_view("abc\0", 4));  // a view holding a NUL: not a's text
+    CHECK_FALSE(a == std::string_view("ab\0", 3));
+    CHECK(a == std::string("abc"));
+    CHECK(std::string("abc") == a);
+    CHECK(std::string("abcd") != a);
+    CHECK(a == STRING<3>("abc"));  // capacities apart
+    CHECK_FALSE(a == STRING<2>("abc"));
+    CHECK_FALSE(STRING<80>("abcde") == a);
+    const char* none = nullptr;
+    CHECK(STRING<3>() == none);  // a null pointer is the empty text
+    CHECK_FALSE(a == none);
+    CHECK(a != none);
+    CHECK(WSTRING<4>(u"ab") == u"ab");
+    CHECK(WSTRING<4>(u"ab") != u"abc");
+    CHECK(WSTRING<4>(u"ab") != std::u16string_view(u"a"));
+    static_assert(STRING<4>("abc") == "abc" && STRING<4>("abc") != "abcd" && !(STRING<4>("ab") == "abc"));
+  }
+
+  TEST_CASE("assignment from a C string reads it up to its NUL or the capacity") {
+    STRING<4> s;
+    const char text[] = {'w', 'x', 'y', 'z', 'q', '\0'};
+    s = text;  // longer: the first four
+    CHECK(s == "wxyz");
+    CHECK(s.size() == 4u);
+    const char* shorter = "ab";
+    s = shorter;
+    CHECK(s == "ab");
+    CHECK(s.c_str()[2] == '\0');
+    STRING<10> t = "0123456789";
+    t = t.c_str() + 4;  // its own text, further on
+    CHECK(t == "456789");
+    const STRING<80> wide = "ok";
+    STRING<5> narrow = "xxxxx";
+    narrow = wide;  // a longer capacity holding a shorter text
+    CHECK(narrow == "ok");
+    CHECK(narrow.size() == 2u);
+  }
+
   TEST_CASE("WSTRING holds UCS-2 and truncates the same way") {
     WSTRING<5> w = u"hello world";
     CHECK(w == u"hello");

@@ -35,8 +35,9 @@
 #include <iecoop/detail/ready_queues.hpp>
 #include <iecoop/fault.hpp>
 #include <iecoop/runtime/cycle_observer.hpp>
-#include <iecoop/runtime/task.hpp>
 #include <iecoop/runtime/task_info.hpp>
+#include <iecoop/runtime/task_settings.hpp>
+#include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
 
 #include <iecoop/detail/push_macros.hpp>
@@ -80,6 +81,8 @@ class task_state : public task_info {
   // The scheduler is this class's other half: the state below is what it schedules with.
   template <std::size_t, class>
   friend class scheduler;
+  template <class State>
+  friend bool detail::end_hooked_cycle(State&, const State*, std::size_t, LTIME, LTIME, unsigned) noexcept;
 
   [[nodiscard]] LTIME cost_of(std::uint64_t cycle) const {
     return cost_function_ != nullptr ? cost_function_(cycle, cost_context_) : cost_constant_;
@@ -137,14 +140,6 @@ struct hooks_from_tasks_t {
   explicit hooks_from_tasks_t() = default;
 };
 inline constexpr hooks_from_tasks_t hooks_from_tasks{};
-
-/// a + b, or LTIME::max() (which the scheduler treats as "never") if that would wrap. By the
-/// addition's carry: on a 32-bit core two instructions and a branch (-40 B of the scheduler
-/// example's flash on the Cortex-M3 against comparing with max() - a).
-constexpr LTIME add_saturated(LTIME a, LTIME b) noexcept {
-  const std::uint64_t sum = a.count() + b.count();  // unsigned: wraps
-  return sum < a.count() ? LTIME::max() : LTIME::from_ticks(sum);
-}
 }  // namespace detail
 
 /**
@@ -336,7 +331,7 @@ class scheduler {
   /// The task called `name`; an unknown name reports fault_kind::invalid_value and yields the first task.
   [[nodiscard]] task_state& task(std::string_view name) noexcept {
     for (task_state& t : tasks_) {
-      if (name == t.settings_.name) return t;
+      if (detail::same_text(t.settings_.name, name)) return t;  // (no strlen, no memcmp)
     }
     fault(fault_kind::invalid_value, "no task of this name in the application; the first task stands in");
     return task_at(0);
@@ -372,7 +367,7 @@ class scheduler {
                 "a cyclic task needs an interval greater than zero; the task is never released");
         }
         // Settings written by hand: the hooks their kind and watchdog need.
-        if (s.hooks == nullptr) s.hooks = detail::hooks_for(s.kind, s.has_watchdog);
+        if (s.hooks == nullptr) s.hooks = detail::hooks_for<task_state>(s.kind, s.has_watchdog);
       } else if (s.priority > 31) {
         s.priority = 31;  // (only where Clang 14 ran task<...>{...} at run time, which reported it)
       }
@@ -411,23 +406,18 @@ class scheduler {
     const LTIME cycle_time = t.record_end(now_);
     // The freewheeling pause and the watchdog through the task's hooks (task_settings::hooks),
     // which only the tasks that need them have: an image without such a task links neither.
-    if (const detail::task_hooks* hooks = t.settings_.hooks) finish_cycle_hooked(t, *hooks, cycle_time);
+    const detail::task_hooks* const hooks = t.settings_.hooks;
+    if (hooks != nullptr && hooks->end_cycle(t, tasks_.data(), N, now_, cycle_time, freewheeling_load_)) {
+      watchdog_exception(t, *hooks);
+    }
   }
 
-  // Apart: only the cycles of a freewheeling task or of one with a watchdog come here.
-  [[gnu::noinline]] void finish_cycle_hooked(task_state& t, const detail::task_hooks& hooks, LTIME cycle_time) {
-    if (hooks.pause != nullptr) {
-      unsigned freewheeling_tasks = 0;
-      for (const task_state& u : tasks_) freewheeling_tasks += u.settings_.kind == task_kind::freewheeling ? 1U : 0U;
-      t.next_release_ = detail::add_saturated(now_, hooks.pause(cycle_time, freewheeling_load_, freewheeling_tasks));
-    }
-    if (hooks.watchdog_fault != nullptr &&
-        hooks.watchdog_fault(t.settings_, t.statistics_, t.watchdog_streak_, cycle_time)) {
-      state_ = scheduler_state::exception;
-      faulted_task_ = &t;
-      clear_schedules();
-      hooks.report_watchdog_fault(t.settings_.name);
-    }
+  // A task's watchdog found a fault: the tasks stop, in the exception state.
+  [[gnu::noinline, gnu::cold]] void watchdog_exception(task_state& t, const detail::task_hooks& hooks) {
+    state_ = scheduler_state::exception;
+    faulted_task_ = &t;
+    clear_schedules();
+    hooks.report_watchdog_fault(t.settings_.name);
   }
 
   // release_due() while running.

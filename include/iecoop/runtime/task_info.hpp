@@ -26,7 +26,7 @@
 #include <iecoop/config.hpp>
 #include <iecoop/detail/constant_division.hpp>
 #include <iecoop/fault.hpp>
-#include <iecoop/runtime/task.hpp>
+#include <iecoop/runtime/task_settings.hpp>
 #include <iecoop/types/elementary.hpp>
 #include <iecoop/types/string.hpp>
 #include <iecoop/types/time.hpp>
@@ -187,22 +187,31 @@ namespace detail {
 /// TwinCAT's F_GetTaskInfo() — `_TaskInfo[GETCURTASKINDEXEX()]`: the current task's
 /// PlcTaskSystemInfo (current_task() in TwinCAT's units). Outside a task cycle: Priority 31,
 /// the other numbers 0, FALSE and ''.
+// The "no task" written out rather than read from detail::no_task: an image that calls
+// F_GetTaskInfo() and GETCURTASKINDEXEX() but not current_task() keeps no task_info constant
+// (168 bytes of flash on a 32-bit core; docs/embedded.md, "Sizes").
 [[nodiscard]] inline PlcTaskSystemInfo F_GetTaskInfo() noexcept {
-  const task_info& task = current_task();
+  const task_info* const task = detail::current_fault_context->cycle_task;
+  if (task == nullptr) {  // no_task's: a task_settings' priority, the rest 0
+    return PlcTaskSystemInfo{UDINT(0U), UINT(task_settings{}.priority), UDINT(0U), UDINT(0U), FALSE, FALSE, {}};
+  }
   return PlcTaskSystemInfo{
-      detail::hundreds_of_ns(task.interval()),
-      UINT(task.priority()),
-      UDINT(static_cast<std::uint32_t>(task.cycle_number())),
-      detail::hundreds_of_ns(task.last_exec_time()),
-      BOOL(task.first_cycle()),
-      BOOL(task.overran()),
-      STRING<63>(task.name()),
+      detail::hundreds_of_ns(task->interval()),
+      UINT(task->priority()),
+      UDINT(static_cast<std::uint32_t>(task->cycle_number())),
+      detail::hundreds_of_ns(task->last_exec_time()),
+      BOOL(task->first_cycle()),
+      BOOL(task->overran()),
+      STRING<63>(task->name()),
   };
 }
 
 /// TwinCAT's GETCURTASKINDEXEX(): the current task's index counting from 1 (the index of
 /// `_TaskInfo[]`), or 0 outside a task cycle (TwinCAT's answer in FB_init).
-[[nodiscard]] inline DINT GETCURTASKINDEXEX() noexcept { return DINT(current_task().index() + 1); }
+[[nodiscard]] inline DINT GETCURTASKINDEXEX() noexcept {
+  const task_info* const task = detail::current_fault_context->cycle_task;
+  return DINT(task != nullptr ? task->index() + 1 : 0);
+}
 
 }  // namespace iecoop
 

@@ -35,6 +35,28 @@ template <class S, class C>
 concept string_like =
     !is_iec_string<std::remove_cvref_t<S>>::value && !std::is_same_v<std::remove_cvref_t<S>, any_field> &&
     std::is_convertible_v<const S&, std::basic_string_view<C>>;
+
+/// Whether the NUL-terminated text `a` is the text `b`, in one pass over both: no length
+/// measured first and no memcmp (a firmware image that compares names then links neither
+/// strlen nor memcmp; docs/embedded.md, "Sizes"). `b` a NUL-terminated text (nullptr: the
+/// empty one) ...
+template <class C>
+constexpr bool same_text(const C* a, const C* b) noexcept {
+  if (b == nullptr) return *a == C{};
+  for (; *a == *b; ++a, ++b) {
+    if (*a == C{}) return true;
+  }
+  return false;
+}
+/// ... or a view, which may hold a NUL (then it is not a NUL-terminated text's).
+template <class C>
+constexpr bool same_text(const C* a, std::basic_string_view<C> b) noexcept {
+  for (const C c : b) {
+    if (*a == C{} || *a != c) return false;
+    ++a;
+  }
+  return *a == C{};
+}
 }  // namespace detail
 
 /**
@@ -79,7 +101,7 @@ class iec_string {
   template <std::size_t M>
     requires(M != N)
   constexpr iec_string(const iec_string<CharT, M>& other) noexcept {  // implicit on purpose
-    assign(other.view());
+    assign(other.c_str());
   }
 
   /// Replaces the contents with (the first N characters of) `text`. `text` may point into
@@ -91,8 +113,16 @@ class iec_string {
     chars_[n] = CharT{};
     return *this;
   }
+  /// The same from NUL-terminated text (nullptr: the empty string), read once: up to its NUL
+  /// or its N-th character, without measuring its length first.
   constexpr iec_string& assign(const CharT* text) noexcept {
-    return text == nullptr ? assign(view_type()) : assign(view_type(text));
+    size_type n = 0;
+    if (text != nullptr) {
+      // (a view into this string is safe here too: each character is read before it is written)
+      for (; n < N && text[n] != CharT{}; ++n) chars_[n] = text[n];
+    }
+    chars_[n] = CharT{};
+    return *this;
   }
 
   [[nodiscard]] constexpr size_type size() const noexcept { return std::char_traits<CharT>::length(chars_); }
@@ -139,6 +169,17 @@ template <class C, std::size_t N, class S>
 constexpr int compare_strings(const iec_string<C, N>& a, const S& b) noexcept {
   return a.view().compare(std::basic_string_view<C>(b));
 }
+/// Whether `a` holds the text `b` (another iec_string, a NUL-terminated text or a view).
+template <class C, std::size_t N, class S>
+constexpr bool equal_strings(const iec_string<C, N>& a, const S& b) noexcept {
+  if constexpr (is_iec_string<S>::value) {
+    return same_text(a.c_str(), b.c_str());
+  } else if constexpr (std::is_convertible_v<const S&, const C*>) {  // literals, pointers
+    return same_text(a.c_str(), static_cast<const C*>(b));
+  } else {
+    return same_text(a.c_str(), std::basic_string_view<C>(b));
+  }
+}
 }  // namespace detail
 
 // Comparison of an iec_string with another of any capacity, a literal or a std string: a
@@ -146,12 +187,12 @@ constexpr int compare_strings(const iec_string<C, N>& a, const S& b) noexcept {
 template <class C, std::size_t N, class S>
   requires detail::string_comparand<S, C>
 constexpr BOOL operator==(const iec_string<C, N>& a, const S& b) noexcept {
-  return BOOL(a.view() == std::basic_string_view<C>(b));
+  return BOOL(detail::equal_strings(a, b));
 }
 template <class C, std::size_t N, class S>
   requires detail::string_comparand<S, C>
 constexpr BOOL operator!=(const iec_string<C, N>& a, const S& b) noexcept {
-  return BOOL(a.view() != std::basic_string_view<C>(b));
+  return BOOL(!detail::equal_strings(a, b));
 }
 template <class C, std::size_t N, class S>
   requires detail::string_comparand<S, C>
@@ -182,12 +223,12 @@ constexpr std::strong_ordering operator<=>(const iec_string<C, N>& a, const S& b
 template <class S, class C, std::size_t N>
   requires detail::string_left_comparand_v<S, C>
 constexpr BOOL operator==(const S& a, const iec_string<C, N>& b) noexcept {
-  return BOOL(std::basic_string_view<C>(a) == b.view());
+  return BOOL(detail::equal_strings(b, a));
 }
 template <class S, class C, std::size_t N>
   requires detail::string_left_comparand_v<S, C>
 constexpr BOOL operator!=(const S& a, const iec_string<C, N>& b) noexcept {
-  return BOOL(std::basic_string_view<C>(a) != b.view());
+  return BOOL(!detail::equal_strings(b, a));
 }
 template <class S, class C, std::size_t N>
   requires detail::string_left_comparand_v<S, C>
