@@ -68,23 +68,24 @@ struct alignas(std::uint64_t) sfc_flags {
   BOOL SFCTip;                ///< in tip mode, a rising edge fires the enabled transitions
   BOOL SFCTipMode;            ///< tip (jog) mode: transitions fire on SFCTip, not on their conditions
 
-  /// Whether SFCInit, SFCReset, SFCPause, SFCQuitError or SFCTip is TRUE: the eight bytes as
-  /// one word, the five flags' bytes masked (a BOOL is one byte, 0 or 1).
+  /// Whether SFCInit, SFCReset, SFCPause, SFCQuitError, SFCTip or SFCTipMode is TRUE: the
+  /// eight bytes as one word, the six flags' bytes masked (a BOOL is one byte, 0 or 1).
   [[nodiscard]] bool any_scan_flag() const noexcept { return (std::bit_cast<std::uint64_t>(*this) & scan_flags) != 0; }
 
  private:
-  // The bytes of SFCInit, SFCReset, SFCPause, SFCQuitError and SFCTip (0, 1, 2, 5, 6), written
-  // out. With the mask computed instead (a constant bit_cast of a sfc_flags), GCC 12.2 crashed
-  // — an internal compiler error in tree_could_trap_p, compiling other code of the translation
-  // unit (bench/scheduler_bench.cpp with -g -O3 and our warnings); the crash came and went with
+  // The bytes of SFCInit, SFCReset, SFCPause, SFCQuitError, SFCTip and SFCTipMode (0, 1, 2, 5,
+  // 6 and 7), written out; the pattern reads the same in both byte orders. With the mask
+  // computed instead (a constant bit_cast of a sfc_flags), GCC 12.2 crashed — an internal
+  // compiler error in tree_could_trap_p, compiling other code of the translation unit
+  // (bench/scheduler_bench.cpp with -g -O3 and our warnings); the crash came and went with
   // unrelated changes (a -DFOO=1 on the command line avoided it), so it is GCC's, and this form
   // compiles every translation unit of the project (docs/performance.md, "SFC").
-  static constexpr std::uint64_t scan_flags =
-      std::endian::native == std::endian::little ? 0x0001'0100'0001'0101U : 0x0101'0100'0001'0100U;
+  static constexpr std::uint64_t scan_flags = 0x0101'0100'0001'0101U;
 };
 static_assert(sizeof(sfc_flags) == sizeof(std::uint64_t) && offsetof(sfc_flags, SFCInit) == 0 &&
                   offsetof(sfc_flags, SFCReset) == 1 && offsetof(sfc_flags, SFCPause) == 2 &&
-                  offsetof(sfc_flags, SFCQuitError) == 5 && offsetof(sfc_flags, SFCTip) == 6,
+                  offsetof(sfc_flags, SFCQuitError) == 5 && offsetof(sfc_flags, SFCTip) == 6 &&
+                  offsetof(sfc_flags, SFCTipMode) == 7,
               "iecoop: the SFC flags are eight BOOLs of one byte each, in the order scan_flags masks");
 
 }  // namespace detail
@@ -324,37 +325,15 @@ class chart : public detail::sfc_flags {
                   "p.nCount != 0; } (ST: nCount <> 0)");
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
-    // Nothing held and no flag set (the usual scan): the engine's byte, then the five flags.
+    // Nothing held and no flag set (the usual scan): the engine's byte, then the six flags.
     if (held_ == 0 && !any_scan_flag()) [[likely]] {
       const TIME elapsed = TIME(now - last_);
       last_ = now;
       detail::engine_access::ref(SFCTrans) = FALSE;
-      scan(pou, elapsed, false);
+      scan_usual(pou, elapsed);
       return;
     }
-    TIME elapsed = started() ? TIME(now - last_) : TIME{};
-    last_ = now;
-    if (!started() || SFCInit || SFCReset) {
-      restart(pou);
-      if (SFCInit) return;
-    }
-    if (SFCQuitError) {
-      SFCError = FALSE;
-      text(SFCErrorStep, "");
-      text(SFCErrorPOU, "");
-      hold(quit_held, true);
-      return;
-    }
-    if (holds(quit_held)) {  // SFCQuitError fell: the active steps' times start again from 0
-      hold(quit_held, false);
-      restart_active_times(pou);
-      elapsed = TIME{};
-    }
-    if (SFCPause) return;
-    const bool tip = SFCTip && !holds(tip_held);
-    hold(tip_held, SFCTip);
-    detail::engine_access::ref(SFCTrans) = FALSE;
-    scan(pou, elapsed, tip);
+    scan_with_flags(pou, now);
   }
 
   /// The control of an IEC action of the chart: `chart.action<&P::A_FILL>().Q`.
@@ -726,9 +705,10 @@ class chart : public detail::sfc_flags {
     }
   }
 
-  // The compiled engine knows which sources are active (Active false) and, where no other
-  // transition of the state shares a source, that none was left (Left false).
-  template <std::size_t Tr, bool Active = true, bool Left = true>
+  // The compiled engine knows which sources are active (Active false), where no other
+  // transition of the state shares a source, that none was left (Left false), and that it scans
+  // only outside the tip mode (Tip false: the flags' scans are the general engine's).
+  template <std::size_t Tr, bool Active = true, bool Left = true, bool Tip = true>
   bool try_fire_valid(POU& pou, bool tip) {
     using E = ends<transition_at<Tr>>;
     // Enabled: every source step active (at the start of the scan) and not left by a
@@ -746,7 +726,7 @@ class chart : public detail::sfc_flags {
       return (min_time_reached<E::from[F]>(pou) && ...);
     }(std::make_index_sequence<E::from.size()>{});
     if (!timed) return false;
-    if (!SFCTipMode || !tip) {
+    if (!Tip || !SFCTipMode || !tip) {
       if (!detail::test<transition_at<Tr>::condition>(pou)) return false;
     }
     if constexpr (!built_for_size) {
@@ -1021,11 +1001,14 @@ class chart : public detail::sfc_flags {
   // qualified N and L alone, a test of its steps and their times; else control_of). In the
   // codesys order, the scan after one transition fired alone is an entry of its own (up to
   // max_entries of them): the steps it changed and the controls of their actions as code
-  // (scan_codesys_entered), the rest as in its state's function. The state
-  // lives beside the general engine's bit sets, which are kept as before: both engines compute
-  // the same, scan for scan (tests/sfc_engines, tests/unit/sfc_engines_test.cpp).
+  // (scan_codesys_entered), the rest as in its state's function. Each state has two functions,
+  // one for a scan after a step change and one for a scan without (which advances the steps'
+  // times without asking which were just activated); where several transitions fire in one
+  // scan, the state they lead to comes from a table (state_after_table). A scan with an SFC
+  // flag set runs the general scan (scan_compiled_flagged). The state lives beside the general
+  // engine's bit sets, which are kept as before: both engines compute the same, scan for scan
+  // (tests/sfc_engines, tests/unit/sfc_engines_test.cpp).
   static constexpr std::size_t max_states = 64;
-  static constexpr std::uint8_t no_state = 0xFF;
 
   // Each transition's sources, targets, first source step and whether its steps are all in the
   // chart, as arrays (for the loops of the searches below).
@@ -1113,6 +1096,10 @@ class chart : public detail::sfc_flags {
 
  private:
   static constexpr std::size_t state_count = states.count;
+  // No state of the table (a set of steps the search did not find: the general scan runs): the
+  // index after the last state, whose entry in the tables of the states' functions is the
+  // general scan.
+  static constexpr std::uint8_t no_state = static_cast<std::uint8_t>(state_count);
 
   // The state transition Tr leads to from state M.
   template <std::size_t M, std::size_t Tr>
@@ -1122,6 +1109,23 @@ class chart : public detail::sfc_flags {
       if (states.sets[k] == next) return static_cast<std::uint8_t>(k);
     }
     return no_state;
+  }();
+  // The state transition Tr leads to from each state, where it fires after others fired in the
+  // same scan (the state they led to the index; no_state from no_state). In the codesys order a
+  // transition fires on the steps active at the scan's start, its sources left by none of the
+  // others, and the next scan's steps are the last values of _X: its step changes follow
+  // theirs, in the order they fired.
+  template <std::size_t Tr>
+  static constexpr std::array<std::uint8_t, state_count + 1> state_after_table = [] {
+    std::array<std::uint8_t, state_count + 1> table{};
+    table.fill(no_state);
+    for (std::size_t m = 0; m < state_count; ++m) {
+      const step_set next = after(states.sets[m], all_sources[Tr], all_targets[Tr]);
+      for (std::size_t k = 0; k < state_count; ++k) {
+        if (states.sets[k] == next) table[m] = static_cast<std::uint8_t>(k);
+      }
+    }
+    return table;
   }();
   // The state of the steps `set` (no_state if none).
   static std::uint8_t state_of(const step_set& set) noexcept {
@@ -1405,15 +1409,17 @@ class chart : public detail::sfc_flags {
   // lead to; a scan in which none fires writes neither (they are read only in the scan after a
   // firing, or after restart(), which sets them).
   template <std::size_t M>
-  void fire_in(POU& pou, bool tip) {
-    if (SFCTipMode && !tip) return;
+  void fire_in(POU& pou) {
     bool fired = false;
     [&]<std::size_t... J>(std::index_sequence<J...>) {
       (
           [&] {
             constexpr std::size_t Tr = candidates_in<M>.at[J];
-            if (try_fire_valid<Tr, false, shares_source<M, Tr>>(pou, tip)) {
-              next_state_ = fired ? no_state : state_after<M, Tr>;
+            if (try_fire_valid<Tr, false, shares_source<M, Tr>, false>(pou, false)) {
+              // (after others: codesys, from the state theirs lead to; matiec, whose scan applies
+              // every left step before every entered one, from the steps, no_state)
+              next_state_ =
+                  fired ? (order::actions_first ? state_after_table<Tr>[next_state_] : no_state) : state_after<M, Tr>;
               next_entry_ = fired ? no_entry : entry_of<M, J>;
               fired = true;
             }
@@ -1492,7 +1498,7 @@ class chart : public detail::sfc_flags {
   // The codesys scan in state N after transition Tr fired alone in the last scan: what
   // scan_codesys_in<N> does with `changed`, its step changes written out.
   template <std::size_t N, std::size_t Tr>
-  void scan_codesys_entered(POU& pou, TIME elapsed, bool tip) {
+  void scan_codesys_entered(POU& pou, TIME elapsed) {
     each_of<steps_left_by<N, Tr>>(
         [&](auto i) { detail::engine_access::ref((pou.*members[decltype(i)::value]).X) = FALSE; });
     each_of<steps_entered_by<N, Tr>>([&](auto i) { step_entered<decltype(i)::value>(pou); });
@@ -1512,17 +1518,21 @@ class chart : public detail::sfc_flags {
       if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
       run_bodies_in<N>(pou);
     }
-    fire_in<N>(pou, tip);
+    fire_in<N>(pou);
   }
 
   // The codesys scan in state M, after scan_codesys's first lines.
-  template <std::size_t M>
-  void scan_codesys_in(POU& pou, TIME elapsed, bool tip, bool changed) {
-    if (changed) steps_changed_in<M>(pou);
-    each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
+  template <std::size_t M, bool Changed>
+  void scan_codesys_in(POU& pou, TIME elapsed) {
+    if constexpr (Changed) {
+      steps_changed_in<M>(pou);
+      each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
+    } else {  // no step activated in this scan: every active step's time advances
+      each_step_in<M>([&](auto i) { T<decltype(i)::value>(pou) = T<decltype(i)::value>(pou) + elapsed; });
+    }
     steps_of_scan_in<M>(pou, elapsed, false);  // (the changed steps' actions: marked above)
     iec_actions_in<M>(pou, elapsed);
-    fire_in<M>(pou, tip);
+    fire_in<M>(pou);
   }
   // What apply_pending does, M's steps known: X := _X, T := 0 where activated; the actions of
   // the steps that changed are marked (mark_changed_steps_actions). Apart, and not inlined: the
@@ -1549,9 +1559,9 @@ class chart : public detail::sfc_flags {
   // The matiec scan in state M, after scan_matiec's first lines; where a transition fired, the
   // rest of the scan runs in the state it led to.
   template <std::size_t M>
-  void scan_matiec_in(POU& pou, TIME elapsed, bool tip, bool) {
+  void scan_matiec_in(POU& pou, TIME elapsed) {
     each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
-    fire_in<M>(pou, tip);
+    fire_in<M>(pou);
     if (SFCTrans) {
       apply_matiec_evolution(pou, elapsed);
       state_ = next_state_ != no_state ? next_state_ : state_of(active_);
@@ -1572,31 +1582,46 @@ class chart : public detail::sfc_flags {
     iec_actions_in<M>(pou, elapsed);
   }
 
-  // The tables of the states' functions (instantiated only for a compiled chart).
+  // The tables of the states' functions (instantiated only for a compiled chart), each with one
+  // entry more, at no_state: the general scan. They run the usual scans, outside the tip mode
+  // (a scan with an SFC flag set runs on the general engine: scan_compiled_flagged).
   template <bool = true>
   struct state_functions {
-    template <std::size_t M>
-    static void scan(chart& c, POU& pou, TIME elapsed, bool tip, bool changed) {
+    // A scan in state M; Changed: a step changed (codesys: the last scan's transitions fired).
+    template <std::size_t M, bool Changed>
+    static void scan(chart& c, POU& pou, TIME elapsed) {
       if constexpr (order::actions_first) {
-        c.template scan_codesys_in<M>(pou, elapsed, tip, changed);
+        c.template scan_codesys_in<M, Changed>(pou, elapsed);
       } else {
-        c.template scan_matiec_in<M>(pou, elapsed, tip, changed);
+        c.template scan_matiec_in<M>(pou, elapsed);
+      }
+    }
+    // The general scan, where the active steps are no state of the table.
+    static void scan_general(chart& c, POU& pou, TIME elapsed) {
+      if constexpr (order::actions_first) {
+        c.scan_codesys_rest(pou, elapsed, false);
+        c.next_state_ = no_state;  // found again from the steps at the next change
+        c.next_entry_ = no_entry;
+      } else {
+        c.scan_matiec_rest(pou, elapsed, false);
       }
     }
     template <std::size_t M>
     static void rest_of(chart& c, POU& pou, TIME elapsed) {
       c.template rest_matiec_in<M>(pou, elapsed);
     }
+    using scan_function = void (*)(chart&, POU&, TIME);
+    template <bool Changed>
     static constexpr auto scans = []<std::size_t... M>(std::index_sequence<M...>) {
-      return std::array<void (*)(chart&, POU&, TIME, bool, bool), state_count>{&scan<M>...};
+      return std::array<scan_function, state_count + 1>{&scan<M, Changed>..., &scan_general};
     }(std::make_index_sequence<state_count>{});
     static constexpr auto rest = []<std::size_t... M>(std::index_sequence<M...>) {
-      return std::array<void (*)(chart&, POU&, TIME), state_count>{&rest_of<M>...};
+      return std::array<scan_function, state_count>{&rest_of<M>...};
     }(std::make_index_sequence<state_count>{});
 
     // The scan after the J-th transition state M tests fired alone.
     template <std::size_t M, std::size_t J>
-    static void entered(chart& c, POU& pou, TIME elapsed, bool tip) {
+    static void entered(chart& c, POU& pou, TIME elapsed) {
       constexpr std::size_t Tr = candidates_in<M>.at[J];
       constexpr std::uint8_t N = state_after<M, Tr>;
       bool as_known = N != no_state && c.state_ == N;
@@ -1605,28 +1630,62 @@ class chart : public detail::sfc_flags {
       }
       if constexpr (N != no_state) {
         if (as_known) {
-          c.template scan_codesys_entered<N, Tr>(pou, elapsed, tip);
+          c.template scan_codesys_entered<N, Tr>(pou, elapsed);
           return;
         }
       }
-      scans[c.state_](c, pou, elapsed, tip, true);
+      scans<true>[c.state_](c, pou, elapsed);
     }
-    using entry_function = void (*)(chart&, POU&, TIME, bool);
     template <std::size_t M, std::size_t... J>
-    static constexpr void put_entries(std::array<entry_function, entry_count>& table, std::index_sequence<J...>) {
+    static constexpr void put_entries(std::array<scan_function, entry_count>& table, std::index_sequence<J...>) {
       // (made only where the chart has entries: with_entries)
       ((table[entry_offsets[M] + J] = &entered<M, J>), ...);
     }
     static constexpr auto entries = []<std::size_t... M>(std::index_sequence<M...>) {
-      std::array<entry_function, entry_count> table{};
+      std::array<scan_function, entry_count> table{};
       (put_entries<M>(table, std::make_index_sequence<candidates_in<M>.size>{}), ...);
       return table;
     }(std::make_index_sequence < with_entries ? state_count : 0 > {});
   };
 
+  // A scan with a flag set or something held (rare, so apart: the usual scan inlines the less).
+  [[gnu::noinline, gnu::cold]] void scan_with_flags(POU& pou, TIME now) {
+    TIME elapsed = started() ? TIME(now - last_) : TIME{};
+    last_ = now;
+    if (!started() || SFCInit || SFCReset) {
+      restart(pou);
+      if (SFCInit) return;
+    }
+    if (SFCQuitError) {
+      SFCError = FALSE;
+      text(SFCErrorStep, "");
+      text(SFCErrorPOU, "");
+      hold(quit_held, true);
+      return;
+    }
+    if (holds(quit_held)) {  // SFCQuitError fell: the active steps' times start again from 0
+      hold(quit_held, false);
+      restart_active_times(pou);
+      elapsed = TIME{};
+    }
+    if (SFCPause) return;
+    const bool tip = SFCTip && !holds(tip_held);
+    hold(tip_held, SFCTip);
+    detail::engine_access::ref(SFCTrans) = FALSE;
+    scan(pou, elapsed, tip);
+  }
+  // A scan with no SFC flag set and nothing held (the usual one).
+  void scan_usual(POU& pou, TIME elapsed) {
+    if constexpr (compiled) {
+      scan_compiled(pou, elapsed);
+    } else {
+      scan(pou, elapsed, false);
+    }
+  }
+  // A scan after the flags were applied (SFCTip's rising edge: `tip`).
   void scan(POU& pou, TIME elapsed, bool tip) {
     if constexpr (compiled) {
-      scan_compiled(pou, elapsed, tip);
+      scan_compiled_flagged(pou, elapsed, tip);
     } else if constexpr (order::actions_first) {
       scan_codesys(pou, elapsed, tip);
     } else {
@@ -1652,30 +1711,46 @@ class chart : public detail::sfc_flags {
     return state_of(now);
   }
 
-  void scan_compiled(POU& pou, TIME elapsed, bool tip) {
+  void scan_compiled(POU& pou, TIME elapsed) {
     if constexpr (order::actions_first) {
-      const bool changed = take_step_events();
-      if (changed) {
-        state_ = next_state_;
-        if (state_ == no_state) state_ = state_after_several(pou);
-      }
-      if (state_ == no_state) {  // (a set of steps the compile-time search did not find: none is known)
-        scan_codesys_rest(pou, elapsed, tip);
-        next_state_ = no_state;  // found again from the steps at the next change
-        next_entry_ = no_entry;
-      } else if (changed && next_entry_ != no_entry) {
-        if constexpr (with_entries) state_functions<>::entries[next_entry_](*this, pou, elapsed, tip);
-      } else {
-        state_functions<>::scans[state_](*this, pou, elapsed, tip, changed);
+      // Between two scans activated_ and deactivated_ are empty here: the scan that saw them
+      // empties them (below, and scan_compiled_flagged), so a scan that takes no step events
+      // need not copy any.
+      if (detail::any<step_count>(entered_) || detail::any<step_count>(left_)) [[unlikely]] {
+        take_step_events();
+        scan_compiled_changed(pou, elapsed);
+        activated_ = deactivated_ = step_set{};
+        return;
       }
     } else {
       take_step_events();
-      if (state_ == no_state) {
-        scan_matiec_rest(pou, elapsed, tip);
-      } else {
-        state_functions<>::scans[state_](*this, pou, elapsed, tip, false);
+    }
+    state_functions<>::template scans<false>[state_](*this, pou, elapsed);
+  }
+  // codesys: a scan after the last scan's transitions fired.
+  void scan_compiled_changed(POU& pou, TIME elapsed) {
+    state_ = next_state_;
+    if (state_ == no_state) state_ = state_after_several(pou);
+    if constexpr (with_entries) {
+      if (next_entry_ != no_entry) {
+        state_functions<>::entries[next_entry_](*this, pou, elapsed);
+        return;
       }
     }
+    state_functions<>::template scans<true>[state_](*this, pou, elapsed);
+  }
+  // A compiled chart's scan with a flag set (the tip mode, SFCTip, after SFCReset, SFCQuitError
+  // or SFCPause): the general engine's, which the state follows (rare, so apart).
+  [[gnu::noinline, gnu::cold]] void scan_compiled_flagged(POU& pou, TIME elapsed, bool tip) {
+    if constexpr (order::actions_first) {
+      scan_codesys(pou, elapsed, tip);
+      activated_ = deactivated_ = step_set{};  // (empty between scans: scan_compiled)
+      next_state_ = no_state;                  // the state this scan's firings lead to: found at
+      next_entry_ = no_entry;                  // the next change, from the steps
+    } else {
+      scan_matiec(pou, elapsed, tip);
+    }
+    state_ = state_of(active_);
   }
 
   // --- The scan ---------------------------------------------------------------------------
