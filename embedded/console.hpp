@@ -31,9 +31,10 @@ inline void put(std::string_view text) noexcept {
 #endif
 }
 
-#if defined(__arm__)
+#if defined(__arm__) && defined(__GNUC__) && !defined(__clang__)
 /// The length of NUL-terminated `text`, counted here: GCC would turn the loop into a call of
-/// newlib's strlen (92 bytes of flash on a Cortex-M3, which nothing else in an image may need).
+/// newlib's strlen (92 bytes of flash on a Cortex-M3, which nothing else in an image may need;
+/// the attribute is GCC's, the toolchain docs/embedded.md names).
 [[gnu::optimize("no-tree-loop-distribute-patterns")]] inline std::size_t length_of(const char* text) noexcept {
   std::size_t n = 0;
   while (text[n] != '\0') ++n;
