@@ -128,7 +128,9 @@ namespace detail {
 inline constexpr task_info no_task{};
 
 // The task whose cycle runs now is the fault context's cycle_task (fault.hpp): a task cycle
-// makes its task's context current, and with it the task, in one store.
+// makes its task's context current, and with it the task, in one store. nullptr outside a
+// task cycle.
+[[nodiscard]] inline const task_info* cycle_task() noexcept { return current_fault_context->cycle_task; }
 
 /// For a driver of cycles without a scheduler (the test kit's testing::cycles): a task of its
 /// own, whose cycles it records as the scheduler records its tasks'.
@@ -154,7 +156,7 @@ struct task_info_driver {
  * task": index() -1, name() "", interval() 0, cycle_number() 0, priority() 31.
  */
 [[nodiscard]] inline const task_info& current_task() noexcept {
-  const task_info* const task = detail::current_fault_context->cycle_task;
+  const task_info* const task = detail::cycle_task();
   return task != nullptr ? *task : detail::no_task;
 }
 
@@ -191,7 +193,7 @@ namespace detail {
 // F_GetTaskInfo() and GETCURTASKINDEXEX() but not current_task() keeps no task_info constant
 // (168 bytes of flash on a 32-bit core; docs/embedded.md, "Sizes").
 [[nodiscard]] inline PlcTaskSystemInfo F_GetTaskInfo() noexcept {
-  const task_info* const task = detail::current_fault_context->cycle_task;
+  const task_info* const task = detail::cycle_task();
   if (task == nullptr) {  // no_task's: a task_settings' priority, the rest 0
     return PlcTaskSystemInfo{UDINT(0U), UINT(task_settings{}.priority), UDINT(0U), UDINT(0U), FALSE, FALSE, {}};
   }
@@ -209,7 +211,7 @@ namespace detail {
 /// TwinCAT's GETCURTASKINDEXEX(): the current task's index counting from 1 (the index of
 /// `_TaskInfo[]`), or 0 outside a task cycle (TwinCAT's answer in FB_init).
 [[nodiscard]] inline DINT GETCURTASKINDEXEX() noexcept {
-  const task_info* const task = detail::current_fault_context->cycle_task;
+  const task_info* const task = detail::cycle_task();
   return DINT(task != nullptr ? task->index() + 1 : 0);
 }
 

@@ -705,10 +705,10 @@ class chart : public detail::sfc_flags {
     }
   }
 
-  // The compiled engine knows which sources are active (Active false), where no other
-  // transition of the state shares a source, that none was left (Left false), and that it scans
-  // only outside the tip mode (Tip false: the flags' scans are the general engine's).
-  template <std::size_t Tr, bool Active = true, bool Left = true, bool Tip = true>
+  // The compiled engine knows which sources are active (Active false) and, where no other
+  // transition of the state shares a source, that none was left (Left false); it scans only
+  // outside the tip mode (tip false: the flags' scans are the general engine's).
+  template <std::size_t Tr, bool Active = true, bool Left = true>
   bool try_fire_valid(POU& pou, bool tip) {
     using E = ends<transition_at<Tr>>;
     // Enabled: every source step active (at the start of the scan) and not left by a
@@ -726,7 +726,7 @@ class chart : public detail::sfc_flags {
       return (min_time_reached<E::from[F]>(pou) && ...);
     }(std::make_index_sequence<E::from.size()>{});
     if (!timed) return false;
-    if (!Tip || !SFCTipMode || !tip) {
+    if (!SFCTipMode || !tip) {
       if (!detail::test<transition_at<Tr>::condition>(pou)) return false;
     }
     if constexpr (!built_for_size) {
@@ -1101,15 +1101,13 @@ class chart : public detail::sfc_flags {
   // general scan.
   static constexpr std::uint8_t no_state = static_cast<std::uint8_t>(state_count);
 
-  // The state transition Tr leads to from state M.
-  template <std::size_t M, std::size_t Tr>
-  static constexpr std::uint8_t state_after = [] {
-    const step_set next = after(states.sets[M], all_sources[Tr], all_targets[Tr]);
+  // The state of the steps `set` (no_state if none).
+  static constexpr std::uint8_t state_of(const step_set& set) noexcept {
     for (std::size_t k = 0; k < state_count; ++k) {
-      if (states.sets[k] == next) return static_cast<std::uint8_t>(k);
+      if (states.sets[k] == set) return static_cast<std::uint8_t>(k);
     }
     return no_state;
-  }();
+  }
   // The state transition Tr leads to from each state, where it fires after others fired in the
   // same scan (the state they led to the index; no_state from no_state). In the codesys order a
   // transition fires on the steps active at the scan's start, its sources left by none of the
@@ -1120,20 +1118,13 @@ class chart : public detail::sfc_flags {
     std::array<std::uint8_t, state_count + 1> table{};
     table.fill(no_state);
     for (std::size_t m = 0; m < state_count; ++m) {
-      const step_set next = after(states.sets[m], all_sources[Tr], all_targets[Tr]);
-      for (std::size_t k = 0; k < state_count; ++k) {
-        if (states.sets[k] == next) table[m] = static_cast<std::uint8_t>(k);
-      }
+      table[m] = state_of(after(states.sets[m], all_sources[Tr], all_targets[Tr]));
     }
     return table;
   }();
-  // The state of the steps `set` (no_state if none).
-  static std::uint8_t state_of(const step_set& set) noexcept {
-    for (std::size_t k = 0; k < state_count; ++k) {
-      if (states.sets[k] == set) return static_cast<std::uint8_t>(k);
-    }
-    return no_state;
-  }
+  // The state transition Tr leads to from state M.
+  template <std::size_t M, std::size_t Tr>
+  static constexpr std::uint8_t state_after = state_after_table<Tr>[M];
 
   // A list of indices known at compile time (steps, transitions, action ranks) and its length.
   template <std::size_t N>
@@ -1415,7 +1406,7 @@ class chart : public detail::sfc_flags {
       (
           [&] {
             constexpr std::size_t Tr = candidates_in<M>.at[J];
-            if (try_fire_valid<Tr, false, shares_source<M, Tr>, false>(pou, false)) {
+            if (try_fire_valid<Tr, false, shares_source<M, Tr>>(pou, false)) {
               // (after others: codesys, from the state theirs lead to; matiec, whose scan applies
               // every left step before every entered one, from the steps, no_state)
               next_state_ =
@@ -1600,8 +1591,7 @@ class chart : public detail::sfc_flags {
     static void scan_general(chart& c, POU& pou, TIME elapsed) {
       if constexpr (order::actions_first) {
         c.scan_codesys_rest(pou, elapsed, false);
-        c.next_state_ = no_state;  // found again from the steps at the next change
-        c.next_entry_ = no_entry;
+        c.forget_next_state();
       } else {
         c.scan_matiec_rest(pou, elapsed, false);
       }
@@ -1739,14 +1729,19 @@ class chart : public detail::sfc_flags {
     }
     state_functions<>::template scans<true>[state_](*this, pou, elapsed);
   }
+  // codesys, after a general scan: the state its firings lead to is found at the next change,
+  // from the steps.
+  void forget_next_state() noexcept {
+    next_state_ = no_state;
+    next_entry_ = no_entry;
+  }
   // A compiled chart's scan with a flag set (the tip mode, SFCTip, after SFCReset, SFCQuitError
   // or SFCPause): the general engine's, which the state follows (rare, so apart).
   [[gnu::noinline, gnu::cold]] void scan_compiled_flagged(POU& pou, TIME elapsed, bool tip) {
     if constexpr (order::actions_first) {
       scan_codesys(pou, elapsed, tip);
       activated_ = deactivated_ = step_set{};  // (empty between scans: scan_compiled)
-      next_state_ = no_state;                  // the state this scan's firings lead to: found at
-      next_entry_ = no_entry;                  // the next change, from the steps
+      forget_next_state();
     } else {
       scan_matiec(pou, elapsed, tip);
     }
