@@ -23,8 +23,7 @@ std::uint32_t inputs_only(std::uint64_t n) {
   sfc_programs::inputs sink{};
   for (std::uint64_t i = 0; i < n; ++i) {
     const auto k = static_cast<std::uint32_t>(i);
-    iecoop::cycle_clock::set(
-        iecoop::LTIME::from_ticks(static_cast<std::uint64_t>(k) * sfc_programs::scan_period_ms * 1'000'000U));
+    sfc_programs::set_clock(k);
     sink = sfc_programs::inputs_at(k);
     sfc_programs::barrier();
   }

@@ -133,10 +133,16 @@ struct P_BATCH_ON : program<P_BATCH_ON<Engine...>> {
 using P_BATCH = P_BATCH_ON<>;                             // the default engine (compiled, at -O2/-O3)
 using P_BATCH_GENERAL = P_BATCH_ON<sfc::general_engine>;  // the general engine
 
+/// The cycle clock at scan k (k x scan_period_ms), as a task sets it before its cycle: both
+/// sides read their time from it.
+inline void set_clock(std::uint32_t k) noexcept {
+  cycle_clock::set(LTIME::from_ticks(static_cast<std::uint64_t>(k) * scan_period_ms * 1'000'000U));
+}
+
 /// Scan k of the chart: the cycle clock and the inputs, then the program.
 template <class P>
 inline void chart_scan(P& p, std::uint32_t k) noexcept {
-  cycle_clock::set(LTIME::from_ticks(static_cast<std::uint64_t>(k) * scan_period_ms * 1'000'000U));
+  set_clock(k);
   const inputs in = inputs_at(k);
   p.START = in.START;
   p.LEVEL_HI = in.LEVEL_HI;
@@ -393,8 +399,10 @@ struct hand_batch {
   }
 };
 
-/// Scan k of the hand-written machine: the time stamp and the inputs, then the machine.
+/// Scan k of the hand-written machine: the cycle clock and the inputs, then the machine, which
+/// reads the cycle's time stamp in milliseconds (TIME) as a program of a task does.
 inline void hand_scan(hand_batch& h, std::uint32_t k) noexcept {
+  set_clock(k);
   const inputs in = inputs_at(k);
   h.START = in.START;
   h.LEVEL_HI = in.LEVEL_HI;
@@ -403,7 +411,7 @@ inline void hand_scan(hand_batch& h, std::uint32_t k) noexcept {
   h.JOIN_OK = in.JOIN_OK;
   h.LEVEL_LO = in.LEVEL_LO;
   h.OK = in.OK;
-  h.scan(k * scan_period_ms);
+  h.scan(cycle_clock::now_as<TIME>().count());
 }
 
 // --- Checks -------------------------------------------------------------------------------------

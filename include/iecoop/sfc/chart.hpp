@@ -831,8 +831,50 @@ class chart : public detail::sfc_flags {
     TIME sd_pt{}, sl_pt{};
   };
 
-  // The inputs of action A's control: its associations, combined with OR.
+  // What a control knows of the steps: nothing (unknown_steps: X and the scan's step events are
+  // read at run time), or, in the scan after transition Tr fired alone into state N, all of it
+  // (known_steps<N, Tr>: N's steps are the active ones, Tr's targets the activated ones and its
+  // sources the deactivated ones), so that the inputs of the control are constants but for the
+  // steps' times.
+  struct unknown_steps {
+    static constexpr bool known = false;
+  };
+  template <std::size_t N, std::size_t Tr>
+  struct known_steps {
+    static constexpr bool known = true;
+    static constexpr bool active(std::size_t i) noexcept { return detail::test_bit<step_count>(states.sets[N], i); }
+    static constexpr bool activated(std::size_t i) noexcept { return detail::test_bit<step_count>(all_targets[Tr], i); }
+    static constexpr bool deactivated(std::size_t i) noexcept {
+      return detail::test_bit<step_count>(all_sources[Tr], i);
+    }
+  };
+
+  // The qualifiers action A is associated with, as a mask of bits 1 << qualifier.
   template <std::size_t A>
+  static constexpr std::uint16_t qualifiers_of = [] {
+    std::uint16_t mask = 0;
+    [&]<class... S>(detail::type_list<S...>) {
+      (
+          [&]<class... It>(detail::type_list<It...>) {
+            (
+                [&] {
+                  if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                    if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
+                      mask = static_cast<std::uint16_t>(mask | (1U << static_cast<unsigned>(It::kind)));
+                    }
+                  }
+                }(),
+                ...);
+          }(typename S::items{}),
+          ...);
+    }(steps{});
+    return mask;
+  }();
+  template <std::size_t A, qualifier... Q>
+  static constexpr bool uses = (((qualifiers_of<A> & (1U << static_cast<unsigned>(Q))) != 0) || ...);
+
+  // The inputs of action A's control: its associations, combined with OR.
+  template <std::size_t A, class Known = unknown_steps>
   inputs gather(POU& pou) const {
     inputs in;
     each_step([&](auto i) {
@@ -842,7 +884,7 @@ class chart : public detail::sfc_flags {
             [&] {
               if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
                 if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
-                  gather_one<I, It>(pou, in);
+                  gather_one<I, It, Known>(pou, in);
                 }
               }
             }(),
@@ -852,17 +894,42 @@ class chart : public detail::sfc_flags {
     return in;
   }
 
-  template <std::size_t I, class As>
+  template <std::size_t I, class Known>
+  bool activated_in_scan() const noexcept {
+    if constexpr (Known::known) {
+      return Known::activated(I);
+    } else {
+      return detail::test_bit<step_count>(activated_, I);
+    }
+  }
+  template <std::size_t I, class Known>
+  bool deactivated_in_scan() const noexcept {
+    if constexpr (Known::known) {
+      return Known::deactivated(I);
+    } else {
+      return detail::test_bit<step_count>(deactivated_, I);
+    }
+  }
+  template <std::size_t I, class Known>
+  static bool active_now(POU& pou) noexcept {
+    if constexpr (Known::known) {
+      return Known::active(I);
+    } else {
+      return X<I>(pou);
+    }
+  }
+
+  template <std::size_t I, class As, class Known>
   void gather_one(POU& pou, inputs& in) const {
     constexpr qualifier q = As::kind;
     if constexpr (q == qualifier::P) {
-      in.p = in.p || detail::test_bit<step_count>(activated_, I);
+      in.p = in.p || activated_in_scan<I, Known>();
     } else if constexpr (q == qualifier::P1) {
-      in.p1 = in.p1 || detail::test_bit<step_count>(activated_, I);
+      in.p1 = in.p1 || activated_in_scan<I, Known>();
     } else if constexpr (q == qualifier::P0) {
-      in.p0 = in.p0 || detail::test_bit<step_count>(deactivated_, I);
+      in.p0 = in.p0 || deactivated_in_scan<I, Known>();
     } else {
-      if (!X<I>(pou)) return;
+      if (!active_now<I, Known>(pou)) return;
       if constexpr (q == qualifier::N) in.n = true;
       if constexpr (q == qualifier::R) in.r = true;
       if constexpr (q == qualifier::S) in.s = true;
@@ -882,42 +949,56 @@ class chart : public detail::sfc_flags {
 
   // IEC's ACTION_CONTROL for action A (by its rank K in the run order), recomputed where a step
   // changed, a pulse ended, a time runs or a final scan was due: Q, A, and what follows.
+  // The parts of the control an action's qualifiers cannot reach are left out (a stored flag no
+  // association sets stays FALSE).
   struct control_of {
-    template <std::size_t K>
+    template <std::size_t K, class Known = unknown_steps>
     static void call(chart& c, POU& pou, TIME elapsed) {
       constexpr std::size_t A = action_order[K];
-      const inputs in = c.template gather<A>(pou);
+      using enum qualifier;
+      const inputs in = c.template gather<A, Known>(pou);
       detail::control& s = c.controls_[A];
       // The running delays and limits advance first; then the sets; then R, which wins.
-      if (s.sd) s.sd_et = s.sd_et + elapsed;
-      if (s.sl) s.sl_et = s.sl_et + elapsed;
-      if (in.s) s.s = true;
-      if (in.sd && !s.sd) {
-        s.sd = true;
-        s.sd_et = TIME{};
-        s.sd_pt = in.sd_pt;
+      if constexpr (uses<A, SD>) {
+        if (s.sd) s.sd_et = s.sd_et + elapsed;
       }
-      if (in.sl && !s.sl) {
-        s.sl = true;
-        s.sl_et = TIME{};
-        s.sl_pt = in.sl_pt;
+      if constexpr (uses<A, SL>) {
+        if (s.sl) s.sl_et = s.sl_et + elapsed;
+      }
+      if (in.s) s.s = true;
+      if constexpr (uses<A, SD>) {
+        if (in.sd && !s.sd) {
+          s.sd = true;
+          s.sd_et = TIME{};
+          s.sd_pt = in.sd_pt;
+        }
+      }
+      if constexpr (uses<A, SL>) {
+        if (in.sl && !s.sl) {
+          s.sl = true;
+          s.sl_et = TIME{};
+          s.sl_pt = in.sl_pt;
+        }
       }
       if (in.ds) s.ds = true;
       bool q = false;
       bool pulse = false;
       if (in.r) {
-        s.s = s.sd = s.ds = s.sl = false;
+        if constexpr (uses<A, S>) s.s = false;
+        if constexpr (uses<A, SD>) s.sd = false;
+        if constexpr (uses<A, DS>) s.ds = false;
+        if constexpr (uses<A, SL>) s.sl = false;
       } else {
-        const bool held =
-            in.n || in.p || in.l || in.d || s.s || s.ds || (s.sd && s.sd_et >= s.sd_pt) || (s.sl && s.sl_et < s.sl_pt);
+        const bool held = in.n || in.p || in.l || in.d || (uses<A, S> && s.s) || (uses<A, DS> && s.ds) ||
+                          (uses<A, SD> && s.sd && s.sd_et >= s.sd_pt) || (uses<A, SL> && s.sl && s.sl_et < s.sl_pt);
         pulse = !held && (in.p1 || in.p0);
         q = held || pulse;
       }
       // CODESYS runs an action once more after its Q fell (the final scan), except after a
       // P1 or P0 pulse ("executed once"); a P action so runs twice, as CODESYS documents.
-      const bool final_scan = order::actions_first && s.q && !q && !s.pulse;
+      const bool final_scan = order::actions_first && s.q && !q && !(uses<A, P1, P0> && s.pulse);
       s.q = q;
-      s.pulse = pulse;
+      if constexpr (uses<A, P1, P0>) s.pulse = pulse;
       if (q) {
         detail::set_bit<action_count>(c.q_, K);
       } else {
@@ -927,7 +1008,9 @@ class chart : public detail::sfc_flags {
       // Recomputed in the next scan too: after a pulse (its Q falls), while a delay or limit
       // runs, and after a final scan (A falls).
       if (in.p || in.p1 || in.p0 || final_scan) detail::set_bit<action_count>(c.pulsed_, K);
-      if (s.sd || s.sl) detail::set_bit<action_count>(c.timing_, K);
+      if constexpr (uses<A, SD, SL>) {
+        if (s.sd || s.sl) detail::set_bit<action_count>(c.timing_, K);
+      }
       detail::engine_access::ref(c.states_[A].Q) = BOOL(q);
       detail::engine_access::ref(c.states_[A].A) = BOOL(q || final_scan);
       if constexpr (detail::bool_member<std::remove_cv_t<decltype(action_at<A>)>>::value) {
@@ -1200,7 +1283,7 @@ class chart : public detail::sfc_flags {
 
   // Q of a simple action (N and L only): one of its N steps active, or one of its L steps active
   // for less than its duration.
-  template <std::size_t K>
+  template <std::size_t K, class Known = unknown_steps>
   static bool simple_q(POU& pou) {
     constexpr std::size_t A = action_order[K];
     bool q = false;
@@ -1214,9 +1297,9 @@ class chart : public detail::sfc_flags {
                     if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
                       if constexpr (std::is_same_v<detail::action_tag<It::action>, detail::at_t<A, actions>>) {
                         if constexpr (It::kind == qualifier::N) {
-                          r = r || bool(X<step>(p));
+                          r = r || active_now<step, Known>(p);
                         } else if constexpr (It::kind == qualifier::L) {
-                          r = r || (bool(X<step>(p)) && T<step>(p) < It::duration);
+                          r = r || (active_now<step, Known>(p) && T<step>(p) < It::duration);
                         }
                       }
                     }
@@ -1233,13 +1316,13 @@ class chart : public detail::sfc_flags {
   // its L steps is active for less than the duration; a final scan when it falls (codesys). What
   // control_of computes for it, without gathering its inputs.
   struct control_n {
-    template <std::size_t K>
+    template <std::size_t K, class Known = unknown_steps>
     static void call(chart& c, POU& pou, TIME elapsed) {
       if constexpr (!n_action<K>::simple) {
-        control_of::template call<K>(c, pou, elapsed);
+        control_of::template call<K, Known>(c, pou, elapsed);
       } else {
         constexpr std::size_t A = action_order[K];
-        const bool q = simple_q<K>(pou);
+        const bool q = simple_q<K, Known>(pou);
         detail::control& s = c.controls_[A];
         const bool final_scan = order::actions_first && s.q && !q;
         s.q = q;
@@ -1494,7 +1577,10 @@ class chart : public detail::sfc_flags {
         [&](auto i) { detail::engine_access::ref((pou.*members[decltype(i)::value]).X) = FALSE; });
     each_of<steps_entered_by<N, Tr>>([&](auto i) { step_entered<decltype(i)::value>(pou); });
     state_entered<N>();
-    each_step_in<N>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
+    each_step_in<N>([&](auto i) {  // the steps Tr did not enter: their time advances
+      constexpr std::size_t I = decltype(i)::value;
+      if constexpr (!detail::test_bit<step_count>(all_targets[Tr], I)) T<I>(pou) = T<I>(pou) + elapsed;
+    });
     steps_of_scan_in<N>(pou, elapsed, false);
     if constexpr (action_count > 0) {
       // The controls of the actions of the steps that changed, each called as itself; then
@@ -1502,7 +1588,7 @@ class chart : public detail::sfc_flags {
       action_set pending = take_dirty();
       each_of<ranks_changed_by<Tr>>([&](auto k) {
         constexpr std::size_t K = decltype(k)::value;
-        control_n::template call<K>(*this, pou, elapsed);
+        control_n::template call<K, known_steps<N, Tr>>(*this, pou, elapsed);
       });
       for (std::size_t w = 0; w < pending.size(); ++w) pending[w] &= ~actions_changed_by<Tr>[w];
       detail::for_each_bit<action_count>(pending, control_n_table, *this, pou, elapsed);
