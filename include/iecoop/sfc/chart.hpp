@@ -325,6 +325,19 @@ class chart : public detail::sfc_flags {
                   "p.nCount != 0; } (ST: nCount <> 0)");
     static_assert(checked);
     const TIME now = cycle_clock::now_as<TIME>();
+    if constexpr (codesys_compiled) {
+      // No flag set (the usual scan): one call, of the function the last scan chose (state_:
+      // something held has a function of its own).
+      if (!any_scan_flag()) [[likely]] {
+        const TIME elapsed = TIME(now - last_);
+        last_ = now;
+        detail::engine_access::ref(SFCTrans) = FALSE;
+        state_functions<>::codesys_table[state_](*this, pou, elapsed);
+        return;
+      }
+      scan_with_flags(pou, now);
+      return;
+    }
     // Nothing held and no flag set (the usual scan): the engine's byte, then the six flags.
     if (held_ == 0 && !any_scan_flag()) [[likely]] {
       const TIME elapsed = TIME(now - last_);
@@ -431,8 +444,8 @@ class chart : public detail::sfc_flags {
   // --- Reset ------------------------------------------------------------------------------
   void restart(POU& pou) {
     hold(not_started, false);
-    state_ = next_state_ = 0;  // the initial step's state
-    next_entry_ = no_entry;
+    next_state_ = 0;  // the initial step's state (codesys: the state its pending activation leads to)
+    if constexpr (!codesys_compiled) state_ = 0;  // (codesys: the scan sets it, index_after_general)
     each_step([&](auto i) {
       constexpr std::size_t I = decltype(i)::value;
       const bool initial = I == initial_index;
@@ -1050,6 +1063,22 @@ class chart : public detail::sfc_flags {
 
   // The actions whose control this scan recomputes (those marked, those after a pulse, those
   // whose delay or limit runs); the marks and the last scan's final scans are forgotten.
+  // Compiled engine: an action qualified N and L alone is recomputed in the scan after its final
+  // scan only for its A to fall (its Q stays FALSE until one of its steps changes, which marks
+  // it): A := Q without its control.
+  action_set take_pending() noexcept {
+    if constexpr (detail::any<action_count>(simple_actions)) {
+      for (std::size_t w = 0; w < pulsed_.size(); ++w) {
+        const std::uint64_t falls = pulsed_[w] & simple_actions[w] & ~dirty_[w];
+        pulsed_[w] &= ~falls;
+        for (std::uint64_t m = falls; m != 0; m &= m - 1) {
+          const std::size_t a = action_order[w * 64 + static_cast<std::size_t>(std::countr_zero(m))];
+          detail::engine_access::ref(states_[a].A) = states_[a].Q;
+        }
+      }
+    }
+    return take_dirty();
+  }
   action_set take_dirty() noexcept {
     for (std::size_t w = 0; w < dirty_.size(); ++w) {
       dirty_[w] |= pulsed_[w] | timing_[w];
@@ -1183,6 +1212,17 @@ class chart : public detail::sfc_flags {
   // index after the last state, whose entry in the tables of the states' functions is the
   // general scan.
   static constexpr std::uint8_t no_state = static_cast<std::uint8_t>(state_count);
+  // codesys: the functions of the scans (state_functions<>::codesys_table), by index: the usual
+  // scan of each state (its index), the general scan (no_state), the usual scan of each state
+  // with controls of the last scan to compute (pending_base + the state), the scan after the
+  // last scan's transitions fired (changed_index: several, or after a general scan), the flags'
+  // scan where something is held (held_index), the scan after one transition fired alone
+  // (entry_base + its entry).
+  static constexpr bool codesys_compiled = compiled && order::actions_first;
+  static constexpr std::size_t pending_base = state_count + 1;
+  static constexpr std::uint8_t changed_index = static_cast<std::uint8_t>(2 * state_count + 1);
+  static constexpr std::uint8_t held_index = static_cast<std::uint8_t>(2 * state_count + 2);
+  static constexpr std::size_t entry_base = 2 * state_count + 3;
 
   // The state of the steps `set` (no_state if none).
   static constexpr std::uint8_t state_of(const step_set& set) noexcept {
@@ -1343,6 +1383,14 @@ class chart : public detail::sfc_flags {
       }
     }
   };
+  // The actions qualified N and L alone (control_n computes them without the general control).
+  static constexpr action_set simple_actions = [] {
+    action_set result{};
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      ((n_action<K>::simple ? detail::set_bit<action_count>(result, K) : void()), ...);
+    }(std::make_index_sequence<action_count>{});
+    return result;
+  }();
   static constexpr auto control_n_table = []<std::size_t... K>(std::index_sequence<K...>) {
     return std::array<void (*)(chart&, POU&, TIME), action_count>{&control_n::template call<K>...};
   }(std::make_index_sequence<action_count>{});
@@ -1417,7 +1465,7 @@ class chart : public detail::sfc_flags {
   // The controls to compute, and the last scan's final scans. Apart, and not inlined: the usual
   // scan has none.
   [[gnu::noinline]] void controls_pending(POU& pou, TIME elapsed) {
-    detail::for_each_bit<action_count>(take_dirty(), control_n_table, *this, pou, elapsed);
+    detail::for_each_bit<action_count>(take_pending(), control_n_table, *this, pou, elapsed);
     if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
   }
   // The bodies state M calls, in run order (bodies_in<M>).
@@ -1479,11 +1527,13 @@ class chart : public detail::sfc_flags {
   }();
 
   // What fire does, in state M: the transitions whose sources are all in M, in their order.
-  // Where one fires, next_state_ and next_entry_ get the state and entry the scan's firings
-  // lead to; a scan in which none fires writes neither (they are read only in the scan after a
-  // firing, or after restart(), which sets them).
+  // Where one fires, next_state_ gets the state the scan's firings lead to (a scan in which none
+  // fires does not write it: it is read only in the scan after a firing, or after restart(),
+  // which sets it). Codesys: returns the index of the next scan's function (codesys_index): the
+  // entry of the one transition that fired, the changed scan where several did, else `none`.
   template <std::size_t M>
-  void fire_in(POU& pou) {
+  std::uint8_t fire_in(POU& pou, std::uint8_t none = 0) {
+    std::uint8_t next = none;
     bool fired = false;
     [&]<std::size_t... J>(std::index_sequence<J...>) {
       (
@@ -1494,12 +1544,13 @@ class chart : public detail::sfc_flags {
               // every left step before every entered one, from the steps, no_state)
               next_state_ =
                   fired ? (order::actions_first ? state_after_table<Tr>[next_state_] : no_state) : state_after<M, Tr>;
-              next_entry_ = fired ? no_entry : entry_of<M, J>;
+              if constexpr (order::actions_first) next = fired ? changed_index : entry_index<M, J>;
               fired = true;
             }
           }(),
           ...);
     }(std::make_index_sequence<candidates_in<M>.size>{});
+    return next;
   }
 
   // --- Entries: the scan after one transition fired, its step changes known ------------------
@@ -1508,7 +1559,6 @@ class chart : public detail::sfc_flags {
   // are written for those steps, as code, instead of through the bit sets' loops and the
   // controls' table. It checks first that the bit sets say exactly that (a restart or a flag
   // in between changes them), and else runs the state's own scan, which reads them.
-  static constexpr std::uint8_t no_entry = 0xFF;
   // The first entry of each state (an entry per transition a state tests), and their count.
   static constexpr std::array<std::size_t, max_states + 1> entry_offsets = [] {
     std::array<std::size_t, max_states + 1> offsets{};
@@ -1520,11 +1570,14 @@ class chart : public detail::sfc_flags {
   }();
   static constexpr std::size_t entry_count = entry_offsets[state_count];
   // Entries are made where the chart has at most 96 (each is a function of its own to compile;
-  // and an entry's number fits a byte below no_entry).
+  // and every codesys_index fits a byte: 2 x 64 states + 3 + 96 < 256).
   static constexpr std::size_t max_entries = 96;
   static constexpr bool with_entries = entry_count > 0 && entry_count <= max_entries;
+  static constexpr std::size_t codesys_functions = entry_base + (with_entries ? entry_count : 0);
+  static_assert(codesys_functions <= 256);
   template <std::size_t M, std::size_t J>
-  static constexpr std::uint8_t entry_of = with_entries ? static_cast<std::uint8_t>(entry_offsets[M] + J) : no_entry;
+  static constexpr std::uint8_t entry_index =
+      with_entries ? static_cast<std::uint8_t>(entry_base + entry_offsets[M] + J) : changed_index;
 
   // The actions whose controls change where the steps `changed` change (mark_changed_steps_actions).
   static constexpr action_set actions_of_steps(const step_set& changed) noexcept {
@@ -1585,7 +1638,7 @@ class chart : public detail::sfc_flags {
     if constexpr (action_count > 0) {
       // The controls of the actions of the steps that changed, each called as itself; then
       // those a pulse, a delay or a limit still has pending, through the table.
-      action_set pending = take_dirty();
+      action_set pending = take_pending();
       each_of<ranks_changed_by<Tr>>([&](auto k) {
         constexpr std::size_t K = decltype(k)::value;
         control_n::template call<K, known_steps<N, Tr>>(*this, pou, elapsed);
@@ -1595,22 +1648,79 @@ class chart : public detail::sfc_flags {
       if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
       run_bodies_in<N>(pou);
     }
-    fire_in<N>(pou);
+    state_ = fire_in<N>(pou, after_controls<N>());
   }
 
-  // The codesys scan in state M, after scan_codesys's first lines.
-  template <std::size_t M, bool Changed>
-  void scan_codesys_in(POU& pou, TIME elapsed) {
-    if constexpr (Changed) {
-      steps_changed_in<M>(pou);
-      each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
-    } else {  // no step activated in this scan: every active step's time advances
-      each_step_in<M>([&](auto i) { T<decltype(i)::value>(pou) = T<decltype(i)::value>(pou) + elapsed; });
+  // The usual codesys scan in state M: no step changed; Pending: controls of the last scan are
+  // to be computed (a pulse ended, a final scan was run, a delay or limit runs). The steps'
+  // L, D and DS associations mark their controls while their durations run.
+  template <std::size_t M, bool Pending>
+  void scan_codesys_usual(POU& pou, TIME elapsed) {
+    each_step_in<M>([&](auto i) { T<decltype(i)::value>(pou) = T<decltype(i)::value>(pou) + elapsed; });
+    steps_of_scan_in<M>(pou, elapsed, false);
+    std::uint8_t next = static_cast<std::uint8_t>(M);
+    if constexpr (action_count > 0) {
+      if constexpr (Pending) {
+        controls_pending(pou, elapsed);
+        next = after_controls<M>();
+      } else if constexpr (marks_in<M>) {
+        if (detail::any<action_count>(dirty_)) {
+          controls_pending(pou, elapsed);
+          next = after_controls<M>();
+        }
+      }
+      run_bodies_in<M>(pou);
     }
+    state_ = fire_in<M>(pou, next);
+  }
+  // The codesys scan in state M after the last scan's transitions fired (not one alone, or after
+  // a general scan): the step changes from the bit sets.
+  template <std::size_t M>
+  void scan_codesys_changed_in(POU& pou, TIME elapsed) {
+    steps_changed_in<M>(pou);
+    each_step_in<M>([&](auto i) { advance_time::template call<decltype(i)::value>(*this, pou, elapsed); });
     steps_of_scan_in<M>(pou, elapsed, false);  // (the changed steps' actions: marked above)
     iec_actions_in<M>(pou, elapsed);
-    fire_in<M>(pou);
+    state_ = fire_in<M>(pou, after_controls<M>());
   }
+  // Whether controls are left to compute in the next scan: a pulse ends, A falls after a final
+  // scan, a delay or a limit runs.
+  [[nodiscard]] bool controls_left() const noexcept {
+    bool left = false;
+    for (std::size_t w = 0; w < pulsed_.size(); ++w) left = left || (pulsed_[w] | timing_[w]) != 0;
+    return left;
+  }
+  // The next scan's function in state M where no transition fires (codesys_index).
+  template <std::size_t M>
+  std::uint8_t after_controls() const noexcept {
+    if constexpr (action_count == 0) {
+      return static_cast<std::uint8_t>(M);
+    } else {
+      return controls_left() ? static_cast<std::uint8_t>(pending_base + M) : static_cast<std::uint8_t>(M);
+    }
+  }
+  // Whether a step of state M has an L, D or DS association (active_step marks its control).
+  template <std::size_t M>
+  static constexpr bool marks_in = [] {
+    bool result = false;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (
+          [&] {
+            if (!detail::test_bit<step_count>(states.sets[M], I)) return;
+            []<class... It>(detail::type_list<It...>, bool& r) {
+              (
+                  [&] {
+                    if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                      r = r || It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS;
+                    }
+                  }(),
+                  ...);
+            }(typename step_at<I>::items{}, result);
+          }(),
+          ...);
+    }(std::make_index_sequence<step_count>{});
+    return result;
+  }();
   // What apply_pending does, M's steps known: X := _X, T := 0 where activated; the actions of
   // the steps that changed are marked (mark_changed_steps_actions). Apart, and not inlined: the
   // usual scan changes no step.
@@ -1664,70 +1774,111 @@ class chart : public detail::sfc_flags {
   // (a scan with an SFC flag set runs on the general engine: scan_compiled_flagged).
   template <bool = true>
   struct state_functions {
-    // A scan in state M; Changed: a step changed (codesys: the last scan's transitions fired).
-    template <std::size_t M, bool Changed>
-    static void scan(chart& c, POU& pou, TIME elapsed) {
-      if constexpr (order::actions_first) {
-        c.template scan_codesys_in<M, Changed>(pou, elapsed);
-      } else {
-        c.template scan_matiec_in<M>(pou, elapsed);
-      }
+    using scan_function = void (*)(chart&, POU&, TIME);
+
+    // --- matiec: the state of the active steps is state_ (no_state: the general scan) ---
+    template <std::size_t M>
+    static void scan_matiec(chart& c, POU& pou, TIME elapsed) {
+      c.template scan_matiec_in<M>(pou, elapsed);
     }
-    // The general scan, where the active steps are no state of the table.
-    static void scan_general(chart& c, POU& pou, TIME elapsed) {
-      if constexpr (order::actions_first) {
-        c.scan_codesys_rest(pou, elapsed, false);
-        c.forget_next_state();
-      } else {
-        c.scan_matiec_rest(pou, elapsed, false);
-      }
-    }
+    static void scan_matiec_general(chart& c, POU& pou, TIME elapsed) { c.scan_matiec_rest(pou, elapsed, false); }
     template <std::size_t M>
     static void rest_of(chart& c, POU& pou, TIME elapsed) {
       c.template rest_matiec_in<M>(pou, elapsed);
     }
-    using scan_function = void (*)(chart&, POU&, TIME);
-    template <bool Changed>
-    static constexpr auto scans = []<std::size_t... M>(std::index_sequence<M...>) {
-      return std::array<scan_function, state_count + 1>{&scan<M, Changed>..., &scan_general};
+    static constexpr auto matiec_scans = []<std::size_t... M>(std::index_sequence<M...>) {
+      return std::array<scan_function, state_count + 1>{&scan_matiec<M>..., &scan_matiec_general};
     }(std::make_index_sequence<state_count>{});
     static constexpr auto rest = []<std::size_t... M>(std::index_sequence<M...>) {
       return std::array<scan_function, state_count>{&rest_of<M>...};
     }(std::make_index_sequence<state_count>{});
 
-    // The scan after the J-th transition state M tests fired alone.
+    // --- codesys: state_ is the index of the next scan's function (codesys_index) ---
+    template <std::size_t M, bool Pending>
+    static void usual(chart& c, POU& pou, TIME elapsed) {
+      c.template scan_codesys_usual<M, Pending>(pou, elapsed);
+    }
+    // The general scan, where the active steps are no state of the table.
+    static void general(chart& c, POU& pou, TIME elapsed) {
+      c.scan_codesys_rest(pou, elapsed, false);
+      c.forget_next_state();
+      c.state_ = c.index_after_general();
+    }
+    template <std::size_t M>
+    static void changed_in(chart& c, POU& pou, TIME elapsed) {
+      c.template scan_codesys_changed_in<M>(pou, elapsed);
+    }
+    static constexpr auto changed_scans = []<std::size_t... M>(std::index_sequence<M...>) {
+      return std::array<scan_function, state_count + 1>{&changed_in<M>..., &general};
+    }(std::make_index_sequence<state_count>{});
+    // The scan after the last scan's transitions fired (several, or after a general scan): the
+    // state from the one the firings led to, else from the steps.
+    static void changed(chart& c, POU& pou, TIME elapsed) {
+      c.take_step_events();
+      std::uint8_t m = c.next_state_;
+      if (m == no_state) m = c.state_after_several(pou);
+      changed_scans[m](c, pou, elapsed);
+      c.activated_ = c.deactivated_ = step_set{};  // (empty between scans)
+    }
+    // Something held (not started, SFCQuitError's hold, SFCTip's last value): the flags' scan.
+    static void held(chart& c, POU& pou, TIME elapsed) { c.scan_flagged(pou, c.started() ? elapsed : TIME{}); }
+    // The scan after the J-th transition state M tests fired alone: its step changes known.
     template <std::size_t M, std::size_t J>
     static void entered(chart& c, POU& pou, TIME elapsed) {
       constexpr std::size_t Tr = candidates_in<M>.at[J];
       constexpr std::uint8_t N = state_after<M, Tr>;
-      bool as_known = N != no_state && c.state_ == N;
-      for (std::size_t w = 0; w < c.activated_.size(); ++w) {
-        as_known = as_known && c.activated_[w] == all_targets[Tr][w] && c.deactivated_[w] == all_sources[Tr][w];
-      }
-      if constexpr (N != no_state) {
-        if (as_known) {
-          c.template scan_codesys_entered<N, Tr>(pou, elapsed);
-          return;
+      if constexpr (N == no_state) {
+        changed(c, pou, elapsed);
+      } else {
+        // What the last scan's firing left: Tr's targets entered, its sources left (fire_in
+        // makes this index only so); step actions read them as the scan's step events.
+        c.entered_ = c.left_ = step_set{};
+        if constexpr (has_step_actions<detail::step_action_kind::entry> ||
+                      has_step_actions<detail::step_action_kind::exit>) {
+          c.activated_ = all_targets[Tr];
+          c.deactivated_ = all_sources[Tr];
+        }
+        c.template scan_codesys_entered<N, Tr>(pou, elapsed);
+        if constexpr (has_step_actions<detail::step_action_kind::entry> ||
+                      has_step_actions<detail::step_action_kind::exit>) {
+          c.activated_ = c.deactivated_ = step_set{};
         }
       }
-      scans<true>[c.state_](c, pou, elapsed);
     }
     template <std::size_t M, std::size_t... J>
-    static constexpr void put_entries(std::array<scan_function, entry_count>& table, std::index_sequence<J...>) {
-      // (made only where the chart has entries: with_entries)
-      ((table[entry_offsets[M] + J] = &entered<M, J>), ...);
+    static constexpr void put_entries(std::array<scan_function, codesys_functions>& table, std::index_sequence<J...>) {
+      ((table[entry_base + entry_offsets[M] + J] = &entered<M, J>), ...);
     }
-    static constexpr auto entries = []<std::size_t... M>(std::index_sequence<M...>) {
-      std::array<scan_function, entry_count> table{};
-      (put_entries<M>(table, std::make_index_sequence<candidates_in<M>.size>{}), ...);
+    // The functions in the order of codesys_index.
+    static constexpr auto codesys_table = [] {
+      std::array<scan_function, codesys_functions> table{};
+      [&]<std::size_t... M>(std::index_sequence<M...>) {
+        ((table[M] = &usual<M, false>), ...);
+        ((table[pending_base + M] = &usual<M, true>), ...);
+        if constexpr (with_entries) {
+          (put_entries<M>(table, std::make_index_sequence<candidates_in<M>.size>{}), ...);
+        }
+      }(std::make_index_sequence<state_count>{});
+      table[no_state] = &general;
+      table[changed_index] = &changed;
+      table[held_index] = &held;
       return table;
-    }(std::make_index_sequence < with_entries ? state_count : 0 > {});
+    }();
   };
 
   // A scan with a flag set or something held (rare, so apart: the usual scan inlines the less).
   [[gnu::noinline, gnu::cold]] void scan_with_flags(POU& pou, TIME now) {
-    TIME elapsed = started() ? TIME(now - last_) : TIME{};
+    const TIME elapsed = started() ? TIME(now - last_) : TIME{};
     last_ = now;
+    scan_flagged(pou, elapsed);
+  }
+  // The flags' scan, `elapsed` since the last (0 before the first); on a compiled codesys chart
+  // the next scan's function follows from what it left (index_after_general).
+  void scan_flagged(POU& pou, TIME elapsed) {
+    apply_flags(pou, elapsed);
+    if constexpr (codesys_compiled) state_ = index_after_general();
+  }
+  void apply_flags(POU& pou, TIME elapsed) {
     if (!started() || SFCInit || SFCReset) {
       restart(pou);
       if (SFCInit) return;
@@ -1789,49 +1940,35 @@ class chart : public detail::sfc_flags {
 
   void scan_compiled(POU& pou, TIME elapsed) {
     if constexpr (order::actions_first) {
-      // Between two scans activated_ and deactivated_ are empty here: the scan that saw them
-      // empties them (below, and scan_compiled_flagged), so a scan that takes no step events
-      // need not copy any.
-      if (detail::any<step_count>(entered_) || detail::any<step_count>(left_)) [[unlikely]] {
-        take_step_events();
-        scan_compiled_changed(pou, elapsed);
-        activated_ = deactivated_ = step_set{};
-        return;
-      }
+      state_functions<>::codesys_table[state_](*this, pou, elapsed);
     } else {
       take_step_events();
+      state_functions<>::matiec_scans[state_](*this, pou, elapsed);
     }
-    state_functions<>::template scans<false>[state_](*this, pou, elapsed);
-  }
-  // codesys: a scan after the last scan's transitions fired.
-  void scan_compiled_changed(POU& pou, TIME elapsed) {
-    state_ = next_state_;
-    if (state_ == no_state) state_ = state_after_several(pou);
-    if constexpr (with_entries) {
-      if (next_entry_ != no_entry) {
-        state_functions<>::entries[next_entry_](*this, pou, elapsed);
-        return;
-      }
-    }
-    state_functions<>::template scans<true>[state_](*this, pou, elapsed);
   }
   // codesys, after a general scan: the state its firings lead to is found at the next change,
   // from the steps.
-  void forget_next_state() noexcept {
-    next_state_ = no_state;
-    next_entry_ = no_entry;
+  void forget_next_state() noexcept { next_state_ = no_state; }
+  // codesys, after a general or a flags' scan: the next scan's function (codesys_index), from
+  // what the scan left (rare, so apart).
+  [[gnu::noinline, gnu::cold]] std::uint8_t index_after_general() const {
+    if (held_ != 0) return held_index;
+    if (detail::any<step_count>(entered_) || detail::any<step_count>(left_)) return changed_index;
+    const std::uint8_t m = state_of(active_);
+    if (m == no_state) return no_state;
+    return controls_left() ? static_cast<std::uint8_t>(pending_base + m) : m;
   }
   // A compiled chart's scan with a flag set (the tip mode, SFCTip, after SFCReset, SFCQuitError
   // or SFCPause): the general engine's, which the state follows (rare, so apart).
   [[gnu::noinline, gnu::cold]] void scan_compiled_flagged(POU& pou, TIME elapsed, bool tip) {
     if constexpr (order::actions_first) {
       scan_codesys(pou, elapsed, tip);
-      activated_ = deactivated_ = step_set{};  // (empty between scans: scan_compiled)
-      forget_next_state();
+      activated_ = deactivated_ = step_set{};  // (empty between scans)
+      forget_next_state();                     // (state_: scan_flagged)
     } else {
       scan_matiec(pou, elapsed, tip);
+      state_ = state_of(active_);
     }
-    state_ = state_of(active_);
   }
 
   // --- The scan ---------------------------------------------------------------------------
@@ -1910,9 +2047,10 @@ class chart : public detail::sfc_flags {
   std::array<detail::control, action_count> controls_{};
   std::array<action_state, action_count> states_{};
   TIME last_{};
-  std::uint8_t state_ = 0;          // compiled engine: the state of the active steps (no_state: the general scan)
-  std::uint8_t next_state_ = 0;     // ... the state the scan's transitions lead to (codesys: for the next scan)
-  std::uint8_t next_entry_ = 0xFF;  // ... the entry of the one transition that fired (no_entry: none or several)
+  // Compiled engine: matiec, the state of the active steps (no_state: the general scan); codesys,
+  // the index of the next scan's function (codesys_index; first, the held one: not started).
+  std::uint8_t state_ = codesys_compiled ? held_index : 0;
+  std::uint8_t next_state_ = 0;  // ... the state the scan's transitions lead to (codesys: for the next scan)
   // What makes a scan other than the usual, besides the flags: not yet started (the first scan
   // starts the chart), SFCQuitError's hold, SFCTip's value in the last scan (its rising edge).
   static constexpr std::uint8_t not_started = 1, quit_held = 2, tip_held = 4;
