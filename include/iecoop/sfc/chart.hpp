@@ -560,8 +560,9 @@ class chart : public detail::sfc_flags {
     }
   };
   // An active step: its maximum time, its CODESYS step action, and which action controls read its time.
+  // Mark false: the caller computes those controls itself (scan_codesys_usual).
   struct active_step {
-    template <std::size_t I>
+    template <std::size_t I, bool Mark = true>
     static void call(chart& c, POU& pou, TIME elapsed) {
       constexpr TIME maximum = time_limit_of<I, true>();
       if constexpr (maximum != TIME{}) {
@@ -578,7 +579,8 @@ class chart : public detail::sfc_flags {
         (
             [&] {
               if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
-                if constexpr (It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS) {
+                if constexpr (Mark &&
+                              (It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS)) {
                   if (TIME(T<I>(pou) - elapsed) < It::duration) {
                     detail::set_bit<action_count>(c.dirty_, rank_of[action_index<It::action>()]);
                   }
@@ -862,6 +864,15 @@ class chart : public detail::sfc_flags {
     }
   };
 
+  // ... or, in a scan of state M without step changes, its steps (none activated or deactivated).
+  template <std::size_t M>
+  struct known_state {
+    static constexpr bool known = true;
+    static constexpr bool active(std::size_t i) noexcept { return detail::test_bit<step_count>(states.sets[M], i); }
+    static constexpr bool activated(std::size_t) noexcept { return false; }
+    static constexpr bool deactivated(std::size_t) noexcept { return false; }
+  };
+
   // The qualifiers action A is associated with, as a mask of bits 1 << qualifier.
   template <std::size_t A>
   static constexpr std::uint16_t qualifiers_of = [] {
@@ -1067,6 +1078,11 @@ class chart : public detail::sfc_flags {
   // scan only for its A to fall (its Q stays FALSE until one of its steps changes, which marks
   // it): A := Q without its control.
   action_set take_pending() noexcept {
+    take_falls();
+    return take_dirty();
+  }
+  // The first part of take_pending, which also forgets the last scan's final scans.
+  void take_falls() noexcept {
     if constexpr (detail::any<action_count>(simple_actions)) {
       for (std::size_t w = 0; w < pulsed_.size(); ++w) {
         const std::uint64_t falls = pulsed_[w] & simple_actions[w] & ~dirty_[w];
@@ -1077,7 +1093,7 @@ class chart : public detail::sfc_flags {
         }
       }
     }
-    return take_dirty();
+    final_ = action_set{};
   }
   action_set take_dirty() noexcept {
     for (std::size_t w = 0; w < dirty_.size(); ++w) {
@@ -1403,7 +1419,7 @@ class chart : public detail::sfc_flags {
   }();
 
   // What steps_of_scan does, in state M.
-  template <std::size_t M>
+  template <std::size_t M, bool Mark = true>
   void steps_of_scan_in(POU& pou, TIME elapsed, bool changed) {
     if constexpr (has_step_actions<detail::step_action_kind::exit>) {
       detail::for_each_bit<step_count>(deactivated_, exit_table, *this, pou, elapsed);
@@ -1413,7 +1429,7 @@ class chart : public detail::sfc_flags {
       // same scan has its entry action too)
       detail::for_each_bit<step_count>(activated_, entry_table, *this, pou, elapsed);
     }
-    each_step_in<M>([&](auto i) { active_step::template call<decltype(i)::value>(*this, pou, elapsed); });
+    each_step_in<M>([&](auto i) { active_step::template call<decltype(i)::value, Mark>(*this, pou, elapsed); });
     if (changed) {
       mark_changed_steps_actions();
     }
@@ -1657,21 +1673,100 @@ class chart : public detail::sfc_flags {
   template <std::size_t M, bool Pending>
   void scan_codesys_usual(POU& pou, TIME elapsed) {
     each_step_in<M>([&](auto i) { T<decltype(i)::value>(pou) = T<decltype(i)::value>(pou) + elapsed; });
-    steps_of_scan_in<M>(pou, elapsed, false);
+    steps_of_scan_in<M, false>(pou, elapsed, false);  // (the L, D and DS durations: below)
     std::uint8_t next = static_cast<std::uint8_t>(M);
     if constexpr (action_count > 0) {
+      bool general = false;  // controls of the last scan to compute (not only an A that falls)
       if constexpr (Pending) {
+        take_falls();
+        general = controls_left();
+      }
+      if (general) {
+        mark_windows<M>(pou, elapsed);
         controls_pending(pou, elapsed);
         next = after_controls<M>();
-      } else if constexpr (marks_in<M>) {
-        if (detail::any<action_count>(dirty_)) {
-          controls_pending(pou, elapsed);
+      } else if constexpr (window_actions_in<M>.size > 0) {
+        // Nothing else pending: the controls whose L, D or DS duration runs, each called as
+        // itself with M's steps known, then their final scans.
+        bool computed = false;
+        each_of<window_actions_in<M>>([&](auto k) {
+          constexpr std::size_t K = decltype(k)::value;
+          if (window_runs<M, K>(pou, elapsed)) {
+            control_n::template call<K, known_state<M>>(*this, pou, elapsed);
+            computed = true;
+          }
+        });
+        if (computed) {
+          each_of<window_actions_in<M>>([&](auto k) {
+            constexpr std::size_t K = decltype(k)::value;
+            if constexpr (with_body_of<K>) {
+              if (detail::test_bit<action_count>(final_, K)) body_of::template call<K>(pou);
+            }
+          });
           next = after_controls<M>();
         }
       }
       run_bodies_in<M>(pou);
     }
     state_ = fire_in<M>(pou, next);
+  }
+  // What active_step marks in state M: the controls whose L, D or DS duration runs.
+  template <std::size_t M>
+  void mark_windows(POU& pou, TIME elapsed) {
+    each_of<window_actions_in<M>>([&](auto k) {
+      constexpr std::size_t K = decltype(k)::value;
+      if (window_runs<M, K>(pou, elapsed)) detail::set_bit<action_count>(dirty_, K);
+    });
+  }
+  // The actions with an L, D or DS association on a step of state M, by rank.
+  template <std::size_t M>
+  static constexpr index_list<action_count> window_actions_in = [] {
+    action_set found{};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (
+          [&] {
+            if (!detail::test_bit<step_count>(states.sets[M], I)) return;
+            []<class... It>(detail::type_list<It...>, action_set& r) {
+              (
+                  [&] {
+                    if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                      if constexpr (It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS) {
+                        detail::set_bit<action_count>(r, rank_of[action_index<It::action>()]);
+                      }
+                    }
+                  }(),
+                  ...);
+            }(typename step_at<I>::items{}, found);
+          }(),
+          ...);
+    }(std::make_index_sequence<step_count>{});
+    index_list<action_count> list{};
+    for (std::size_t k = 0; k < action_count; ++k) {
+      if (detail::test_bit<action_count>(found, k)) list.at[list.size++] = k;
+    }
+    return list;
+  }();
+  // Whether the duration of an L, D or DS association of action K on a step of state M runs in
+  // this scan (what active_step marks).
+  template <std::size_t M, std::size_t K>
+  static bool window_runs(POU& pou, TIME elapsed) {
+    bool runs = false;
+    each_step_in<M>([&](auto i) {
+      constexpr std::size_t I = decltype(i)::value;
+      []<class... It>(detail::type_list<It...>, POU& p, TIME e, bool& r) {
+        (
+            [&] {
+              if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
+                if constexpr ((It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS) &&
+                              rank_of[action_index<It::action>()] == K) {
+                  r = r || TIME(T<I>(p) - e) < It::duration;
+                }
+              }
+            }(),
+            ...);
+      }(typename step_at<I>::items{}, pou, elapsed, runs);
+    });
+    return runs;
   }
   // The codesys scan in state M after the last scan's transitions fired (not one alone, or after
   // a general scan): the step changes from the bit sets.
@@ -1699,28 +1794,6 @@ class chart : public detail::sfc_flags {
       return controls_left() ? static_cast<std::uint8_t>(pending_base + M) : static_cast<std::uint8_t>(M);
     }
   }
-  // Whether a step of state M has an L, D or DS association (active_step marks its control).
-  template <std::size_t M>
-  static constexpr bool marks_in = [] {
-    bool result = false;
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-      (
-          [&] {
-            if (!detail::test_bit<step_count>(states.sets[M], I)) return;
-            []<class... It>(detail::type_list<It...>, bool& r) {
-              (
-                  [&] {
-                    if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
-                      r = r || It::kind == qualifier::L || It::kind == qualifier::D || It::kind == qualifier::DS;
-                    }
-                  }(),
-                  ...);
-            }(typename step_at<I>::items{}, result);
-          }(),
-          ...);
-    }(std::make_index_sequence<step_count>{});
-    return result;
-  }();
   // What apply_pending does, M's steps known: X := _X, T := 0 where activated; the actions of
   // the steps that changed are marked (mark_changed_steps_actions). Apart, and not inlined: the
   // usual scan changes no step.
