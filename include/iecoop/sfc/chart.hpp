@@ -1650,18 +1650,40 @@ class chart : public detail::sfc_flags {
       constexpr std::size_t I = decltype(i)::value;
       if constexpr (!detail::test_bit<step_count>(all_targets[Tr], I)) T<I>(pou) = T<I>(pou) + elapsed;
     });
-    steps_of_scan_in<N>(pou, elapsed, false);
+    steps_of_scan_in<N, false>(pou, elapsed, false);  // (the L, D and DS durations: below)
     if constexpr (action_count > 0) {
-      // The controls of the actions of the steps that changed, each called as itself; then
-      // those a pulse, a delay or a limit still has pending, through the table.
-      action_set pending = take_pending();
-      each_of<ranks_changed_by<Tr>>([&](auto k) {
-        constexpr std::size_t K = decltype(k)::value;
-        control_n::template call<K, known_steps<N, Tr>>(*this, pou, elapsed);
-      });
-      for (std::size_t w = 0; w < pending.size(); ++w) pending[w] &= ~actions_changed_by<Tr>[w];
-      detail::for_each_bit<action_count>(pending, control_n_table, *this, pou, elapsed);
-      if constexpr (order::actions_first) detail::for_each_bit<action_count>(final_, body_table, pou);
+      // The controls of the actions of the steps that changed, each called as itself with the
+      // steps known.
+      const auto changed_controls = [&] {
+        each_of<ranks_changed_by<Tr>>([&](auto k) {
+          constexpr std::size_t K = decltype(k)::value;
+          control_n::template call<K, known_steps<N, Tr>>(*this, pou, elapsed);
+        });
+      };
+      take_falls();
+      if (controls_left()) [[unlikely]] {
+        // Besides: controls the last scan left (a pulse ended, a delay or limit runs) and those
+        // whose duration runs, through the table, and the final scans in their order.
+        mark_windows<N>(pou, elapsed);
+        action_set pending = take_dirty();
+        changed_controls();
+        for (std::size_t w = 0; w < pending.size(); ++w) pending[w] &= ~actions_changed_by<Tr>[w];
+        detail::for_each_bit<action_count>(pending, control_n_table, *this, pou, elapsed);
+        detail::for_each_bit<action_count>(final_, body_table, pou);
+      } else {
+        // Besides: the controls whose duration runs, and the final scans, each as itself.
+        changed_controls();
+        each_of<windows_after<N, Tr>>([&](auto k) {
+          constexpr std::size_t K = decltype(k)::value;
+          if (window_runs<N, K>(pou, elapsed)) control_n::template call<K, known_steps<N, Tr>>(*this, pou, elapsed);
+        });
+        each_of<finals_after<N, Tr>>([&](auto k) {
+          constexpr std::size_t K = decltype(k)::value;
+          if constexpr (with_body_of<K>) {
+            if (detail::test_bit<action_count>(final_, K)) body_of::template call<K>(pou);
+          }
+        });
+      }
       run_bodies_in<N>(pou);
     }
     state_ = fire_in<N>(pou, after_controls<N>());
@@ -1743,6 +1765,27 @@ class chart : public detail::sfc_flags {
     index_list<action_count> list{};
     for (std::size_t k = 0; k < action_count; ++k) {
       if (detail::test_bit<action_count>(found, k)) list.at[list.size++] = k;
+    }
+    return list;
+  }();
+  // The actions with an L, D or DS duration in state N that transition Tr did not change, and
+  // those whose control the scan after Tr computes (changed or running), by rank.
+  template <std::size_t N, std::size_t Tr>
+  static constexpr index_list<action_count> windows_after = [] {
+    index_list<action_count> list{};
+    for (std::size_t j = 0; j < window_actions_in<N>.size; ++j) {
+      const std::size_t k = window_actions_in<N>.at[j];
+      if (!detail::test_bit<action_count>(actions_changed_by<Tr>, k)) list.at[list.size++] = k;
+    }
+    return list;
+  }();
+  template <std::size_t N, std::size_t Tr>
+  static constexpr index_list<action_count> finals_after = [] {
+    index_list<action_count> list{};
+    for (std::size_t k = 0; k < action_count; ++k) {
+      bool window = false;
+      for (std::size_t j = 0; j < windows_after<N, Tr>.size; ++j) window = window || windows_after<N, Tr>.at[j] == k;
+      if (window || detail::test_bit<action_count>(actions_changed_by<Tr>, k)) list.at[list.size++] = k;
     }
     return list;
   }();
