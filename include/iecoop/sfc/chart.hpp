@@ -901,7 +901,7 @@ class chart : public detail::sfc_flags {
   template <std::size_t A, class Known = unknown_steps>
   inputs gather(POU& pou) const {
     inputs in;
-    each_step([&](auto i) {
+    each_of<steps_of_action<A>>([&](auto i) {
       constexpr std::size_t I = decltype(i)::value;
       [&]<class... It>(detail::type_list<It...>) {
         (
@@ -1072,11 +1072,9 @@ class chart : public detail::sfc_flags {
     return result;
   }();
 
-  // The actions whose control this scan recomputes (those marked, those after a pulse, those
-  // whose delay or limit runs); the marks and the last scan's final scans are forgotten.
-  // Compiled engine: an action qualified N and L alone is recomputed in the scan after its final
-  // scan only for its A to fall (its Q stays FALSE until one of its steps changes, which marks
-  // it): A := Q without its control.
+  // Compiled engine: what take_dirty takes, but an action qualified N and L alone recomputed in
+  // the scan after its final scan only for its A to fall (its Q stays FALSE until one of its
+  // steps changes, which marks it) has A := Q without its control.
   action_set take_pending() noexcept {
     take_falls();
     return take_dirty();
@@ -1095,6 +1093,8 @@ class chart : public detail::sfc_flags {
     }
     final_ = action_set{};
   }
+  // The actions whose control this scan recomputes (those marked, those after a pulse, those
+  // whose delay or limit runs); the marks and the last scan's final scans are forgotten.
   action_set take_dirty() noexcept {
     for (std::size_t w = 0; w < dirty_.size(); ++w) {
       dirty_[w] |= pulsed_[w] | timing_[w];
@@ -1119,23 +1119,24 @@ class chart : public detail::sfc_flags {
   // --- The compiled engine -----------------------------------------------------------------
   // The sets of steps that can be active at once (the chart's states) are found at compile time
   // from the initial step through the transitions. Where there are at most max_states, each
-  // state gets a function of its own (scan_codesys_in<M>, scan_matiec_in<M>) that does what the
+  // state gets functions of its own (scan_codesys_usual<M>, scan_matiec_in<M>) that do what the
   // general scan does with its active steps known: the steps' times, checks and step actions,
   // the transitions to test, in their order, and the bodies of the actions, in their order, with
   // an action qualified N only called in the states where one of its steps is active. A scan is
   // one call through a table of those functions; a state that fired a transition knows the
-  // state it leads to. The bodies of the other actions are tested on their Q; the controls,
-  // where a step changed, go through the general code's tables (control_n: for an action
-  // qualified N and L alone, a test of its steps and their times; else control_of). In the
-  // codesys order, the scan after one transition fired alone is an entry of its own (up to
-  // max_entries of them): the steps it changed and the controls of their actions as code
-  // (scan_codesys_entered), the rest as in its state's function. Each state has two functions,
-  // one for a scan after a step change and one for a scan without (which advances the steps'
-  // times without asking which were just activated); where several transitions fire in one
-  // scan, the state they lead to comes from a table (state_after_table). A scan with an SFC
-  // flag set runs the general scan (scan_compiled_flagged). The state lives beside the general
-  // engine's bit sets, which are kept as before: both engines compute the same, scan for scan
-  // (tests/sfc_engines, tests/unit/sfc_engines_test.cpp).
+  // state it leads to. The bodies of the other actions are tested on their Q; the controls are
+  // computed as code with the steps known (control_n<K, known_steps<N, Tr>> and known_state<M>:
+  // for an action qualified N and L alone, a test of its steps and their times; else
+  // control_of) where the state knows them: the steps a transition changed, the L, D and DS
+  // durations that run; else through the general code's table. In the codesys order state_ is
+  // the index of the next scan's function, which each scan chooses (codesys_index): the usual
+  // scan of a state, the same with controls left to compute, the scan after one transition fired
+  // alone (an entry, up to max_entries of them: the steps it changed and their actions' controls
+  // as code, scan_codesys_entered), the scan after several fired (whose state comes from a
+  // table, state_after_table), the general scan, the flags' scan where something is held. A
+  // scan with an SFC flag set runs the general scan (scan_compiled_flagged). The state lives
+  // beside the general engine's bit sets, which are kept as before: both engines compute the
+  // same, scan for scan (tests/sfc_engines, tests/unit/sfc_engines_test.cpp).
   static constexpr std::size_t max_states = 64;
 
   // Each transition's sources, targets, first source step and whether its steps are all in the
@@ -1271,6 +1272,45 @@ class chart : public detail::sfc_flags {
     std::array<std::size_t, (N == 0 ? 1 : N)> at{};
     std::size_t size = 0;
   };
+  // The steps with an association of action A, in step order.
+  template <std::size_t A>
+  static constexpr index_list<step_count> steps_of_action = [] {
+    index_list<step_count> list{};
+    for (std::size_t i = 0; i < step_count; ++i) {
+      if (detail::test_bit<action_count>(step_action_mask[i], rank_of[A])) list.at[list.size++] = i;
+    }
+    return list;
+  }();
+  // What Known says of the steps of action A's associations, as bits (bit j: the j-th of
+  // steps_of_action<A>): the control of one action in the states and entries where its steps
+  // are the same is one instantiation (compile time).
+  template <std::size_t A, std::uint64_t Active, std::uint64_t Activated, std::uint64_t Deactivated>
+  struct known_local {
+    static constexpr bool known = true;
+    static constexpr std::uint64_t bit(std::size_t i) noexcept {
+      for (std::size_t j = 0; j < steps_of_action<A>.size; ++j) {
+        if (steps_of_action<A>.at[j] == i) return std::uint64_t{1} << j;
+      }
+      return 0;
+    }
+    static constexpr bool active(std::size_t i) noexcept { return (Active & bit(i)) != 0; }
+    static constexpr bool activated(std::size_t i) noexcept { return (Activated & bit(i)) != 0; }
+    static constexpr bool deactivated(std::size_t i) noexcept { return (Deactivated & bit(i)) != 0; }
+  };
+  // Which: 0 active, 1 activated, 2 deactivated.
+  template <std::size_t A, class Known, int Which>
+  static constexpr std::uint64_t local_bits() noexcept {
+    std::uint64_t bits = 0;
+    for (std::size_t j = 0; j < steps_of_action<A>.size; ++j) {
+      const std::size_t i = steps_of_action<A>.at[j];
+      const bool on = Which == 0 ? Known::active(i) : Which == 1 ? Known::activated(i) : Known::deactivated(i);
+      if (on) bits |= std::uint64_t{1} << j;
+    }
+    return bits;
+  }
+  template <std::size_t A, class Known>
+  using localized = known_local<A, local_bits<A, Known, 0>(), local_bits<A, Known, 1>(), local_bits<A, Known, 2>()>;
+
   // f(integral_constant<List.at[J]>) for each entry J of List, in order (one instantiation per
   // entry, where a fold over all steps with a test would make one per step and state).
   template <const auto& List, class F>
@@ -1343,11 +1383,11 @@ class chart : public detail::sfc_flags {
   static bool simple_q(POU& pou) {
     constexpr std::size_t A = action_order[K];
     bool q = false;
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
+    [&]<std::size_t... J>(std::index_sequence<J...>) {
       (
           [&] {
-            constexpr std::size_t step = I;
-            []<class... It>(detail::type_list<It...>, POU& p, bool& r) {
+            constexpr std::size_t step = steps_of_action<A>.at[J];
+            [&]<class... It>(detail::type_list<It...>, POU& p, bool& r) {
               (
                   [&] {
                     if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
@@ -1361,10 +1401,10 @@ class chart : public detail::sfc_flags {
                     }
                   }(),
                   ...);
-            }(typename step_at<I>::items{}, pou, q);
+            }(typename step_at<step>::items{}, pou, q);
           }(),
           ...);
-    }(std::make_index_sequence<step_count>{});
+    }(std::make_index_sequence<steps_of_action<A>.size>{});
     return q;
   }
 
@@ -1374,6 +1414,14 @@ class chart : public detail::sfc_flags {
   struct control_n {
     template <std::size_t K, class Known = unknown_steps>
     static void call(chart& c, POU& pou, TIME elapsed) {
+      if constexpr (Known::known && steps_of_action<action_order[K]>.size <= 64) {
+        call_as<K, localized<action_order[K], Known>>(c, pou, elapsed);
+      } else {
+        call_as<K, Known>(c, pou, elapsed);
+      }
+    }
+    template <std::size_t K, class Known>
+    static void call_as(chart& c, POU& pou, TIME elapsed) {
       if constexpr (!n_action<K>::simple) {
         control_of::template call<K, Known>(c, pou, elapsed);
       } else {
@@ -1573,8 +1621,8 @@ class chart : public detail::sfc_flags {
   // The scan after transition Tr (the J-th that state M tests) fired alone knows the steps it
   // activates and deactivates: their X and T, SFCCurrentStep and the controls of their actions
   // are written for those steps, as code, instead of through the bit sets' loops and the
-  // controls' table. It checks first that the bit sets say exactly that (a restart or a flag
-  // in between changes them), and else runs the state's own scan, which reads them.
+  // controls' table. Only fire_in chooses an entry, where Tr alone fired: then the bit sets say
+  // exactly that (a flags' scan in between chooses the next scan's function anew).
   // The first entry of each state (an entry per transition a state tests), and their count.
   static constexpr std::array<std::size_t, max_states + 1> entry_offsets = [] {
     std::array<std::size_t, max_states + 1> offsets{};
@@ -1690,11 +1738,11 @@ class chart : public detail::sfc_flags {
   }
 
   // The usual codesys scan in state M: no step changed; Pending: controls of the last scan are
-  // to be computed (a pulse ended, a final scan was run, a delay or limit runs). The steps'
-  // L, D and DS associations mark their controls while their durations run.
+  // to be computed (a pulse ended, a final scan was run, a delay or limit runs). The controls
+  // whose L, D or DS duration runs are computed with them, or, where nothing else is, as code.
   template <std::size_t M, bool Pending>
   void scan_codesys_usual(POU& pou, TIME elapsed) {
-    each_step_in<M>([&](auto i) { T<decltype(i)::value>(pou) = T<decltype(i)::value>(pou) + elapsed; });
+    advance_times_in<M>(elapsed, pou);
     steps_of_scan_in<M, false>(pou, elapsed, false);  // (the L, D and DS durations: below)
     std::uint8_t next = static_cast<std::uint8_t>(M);
     if constexpr (action_count > 0) {
@@ -1703,34 +1751,48 @@ class chart : public detail::sfc_flags {
         take_falls();
         general = controls_left();
       }
-      if (general) {
-        mark_windows<M>(pou, elapsed);
-        controls_pending(pou, elapsed);
-        next = after_controls<M>();
-      } else if constexpr (window_actions_in<M>.size > 0) {
-        // Nothing else pending: the controls whose L, D or DS duration runs, each called as
-        // itself with M's steps known, then their final scans.
-        bool computed = false;
-        each_of<window_actions_in<M>>([&](auto k) {
-          constexpr std::size_t K = decltype(k)::value;
-          if (window_runs<M, K>(pou, elapsed)) {
-            control_n::template call<K, known_state<M>>(*this, pou, elapsed);
-            computed = true;
-          }
-        });
-        if (computed) {
-          each_of<window_actions_in<M>>([&](auto k) {
-            constexpr std::size_t K = decltype(k)::value;
-            if constexpr (with_body_of<K>) {
-              if (detail::test_bit<action_count>(final_, K)) body_of::template call<K>(pou);
-            }
-          });
-          next = after_controls<M>();
-        }
-      }
+      next = general ? general_controls_in<M>(pou, elapsed) : window_controls_in<M>(pou, elapsed);
       run_bodies_in<M>(pou);
     }
     state_ = fire_in<M>(pou, next);
+  }
+  // (The parts of scan_codesys_usual<M, Pending> that do not depend on Pending: one
+  // instantiation for both, to compile.)
+  template <std::size_t M>
+  static void advance_times_in(TIME elapsed, POU& pou) {
+    each_step_in<M>([&](auto i) { T<decltype(i)::value>(pou) = T<decltype(i)::value>(pou) + elapsed; });
+  }
+  // Controls of the last scan to compute: with those whose duration runs, through the table.
+  template <std::size_t M>
+  std::uint8_t general_controls_in(POU& pou, TIME elapsed) {
+    mark_windows<M>(pou, elapsed);
+    controls_pending(pou, elapsed);
+    return after_controls<M>();
+  }
+  // Nothing else pending: the controls whose L, D or DS duration runs, each called as itself
+  // with M's steps known, then their final scans. The next scan's function.
+  template <std::size_t M>
+  std::uint8_t window_controls_in(POU& pou, TIME elapsed) {
+    if constexpr (window_actions_in<M>.size == 0) {
+      return static_cast<std::uint8_t>(M);
+    } else {
+      bool computed = false;
+      each_of<window_actions_in<M>>([&](auto k) {
+        constexpr std::size_t K = decltype(k)::value;
+        if (window_runs<M, K>(pou, elapsed)) {
+          control_n::template call<K, known_state<M>>(*this, pou, elapsed);
+          computed = true;
+        }
+      });
+      if (!computed) return static_cast<std::uint8_t>(M);
+      each_of<window_actions_in<M>>([&](auto k) {
+        constexpr std::size_t K = decltype(k)::value;
+        if constexpr (with_body_of<K>) {
+          if (detail::test_bit<action_count>(final_, K)) body_of::template call<K>(pou);
+        }
+      });
+      return after_controls<M>();
+    }
   }
   // What active_step marks in state M: the controls whose L, D or DS duration runs.
   template <std::size_t M>
@@ -1796,7 +1858,7 @@ class chart : public detail::sfc_flags {
     bool runs = false;
     each_step_in<M>([&](auto i) {
       constexpr std::size_t I = decltype(i)::value;
-      []<class... It>(detail::type_list<It...>, POU& p, TIME e, bool& r) {
+      []<class... It>(detail::type_list<It...>, [[maybe_unused]] POU& p, [[maybe_unused]] TIME e, bool& r) {
         (
             [&] {
               if constexpr (It::iecoop_sfc_element == detail::element_kind::association) {
@@ -1824,9 +1886,9 @@ class chart : public detail::sfc_flags {
   // Whether controls are left to compute in the next scan: a pulse ends, A falls after a final
   // scan, a delay or a limit runs.
   [[nodiscard]] bool controls_left() const noexcept {
-    bool left = false;
-    for (std::size_t w = 0; w < pulsed_.size(); ++w) left = left || (pulsed_[w] | timing_[w]) != 0;
-    return left;
+    bool any = false;
+    for (std::size_t w = 0; w < pulsed_.size(); ++w) any = any || (pulsed_[w] | timing_[w]) != 0;
+    return any;
   }
   // The next scan's function in state M where no transition fires (codesys_index).
   template <std::size_t M>
@@ -1886,8 +1948,9 @@ class chart : public detail::sfc_flags {
   }
 
   // The tables of the states' functions (instantiated only for a compiled chart), each with one
-  // entry more, at no_state: the general scan. They run the usual scans, outside the tip mode
-  // (a scan with an SFC flag set runs on the general engine: scan_compiled_flagged).
+  // entry more, at no_state: the general scan; in the codesys order one table of every scan's
+  // function, by codesys_index. They run the scans outside the tip mode (a scan with an SFC flag
+  // set runs on the general engine: scan_compiled_flagged).
   template <bool = true>
   struct state_functions {
     using scan_function = void (*)(chart&, POU&, TIME);
