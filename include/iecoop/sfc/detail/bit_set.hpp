@@ -28,11 +28,18 @@ template <std::size_t N>
 constexpr void clear_bit(bits<N>& b, std::size_t i) noexcept {
   b[i / 64] &= ~(std::uint64_t{1} << (i % 64));
 }
+/// The bits of word w that can be set (below N): a bit set never has others, and saying so
+/// lets the compiler see that an index stays below N (g++ 12 -O2 -Warray-bounds otherwise warns
+/// about the table of a chart of a few steps).
+template <std::size_t N>
+constexpr std::uint64_t valid_bits(std::size_t w) noexcept {
+  return (w + 1) * 64 <= N ? ~std::uint64_t{0} : w * 64 >= N ? 0 : (std::uint64_t{1} << (N - w * 64)) - 1;
+}
 /// Calls table[i](args...) for every set bit i, lowest first.
 template <std::size_t N, class Table, class... Args>
 void for_each_bit(const bits<N>& b, const Table& table, Args&... args) {
   for (std::size_t w = 0; w < b.size(); ++w) {
-    for (std::uint64_t m = b[w]; m != 0; m &= m - 1) {
+    for (std::uint64_t m = b[w] & valid_bits<N>(w); m != 0; m &= m - 1) {
       table[w * 64 + static_cast<std::size_t>(std::countr_zero(m))](args...);
     }
   }
