@@ -918,20 +918,13 @@ class chart : public detail::sfc_flags {
     return in;
   }
 
-  template <std::size_t I, class Known>
-  bool activated_in_scan() const noexcept {
+  // Whether step I was activated (Activated) or deactivated in this scan.
+  template <std::size_t I, class Known, bool Activated>
+  bool changed_in_scan() const noexcept {
     if constexpr (Known::known) {
-      return Known::activated(I);
+      return Activated ? Known::activated(I) : Known::deactivated(I);
     } else {
-      return detail::test_bit<step_count>(activated_, I);
-    }
-  }
-  template <std::size_t I, class Known>
-  bool deactivated_in_scan() const noexcept {
-    if constexpr (Known::known) {
-      return Known::deactivated(I);
-    } else {
-      return detail::test_bit<step_count>(deactivated_, I);
+      return detail::test_bit<step_count>(Activated ? activated_ : deactivated_, I);
     }
   }
   template <std::size_t I, class Known>
@@ -947,11 +940,11 @@ class chart : public detail::sfc_flags {
   void gather_one(POU& pou, inputs& in) const {
     constexpr qualifier q = As::kind;
     if constexpr (q == qualifier::P) {
-      in.p = in.p || activated_in_scan<I, Known>();
+      in.p = in.p || changed_in_scan<I, Known, true>();
     } else if constexpr (q == qualifier::P1) {
-      in.p1 = in.p1 || activated_in_scan<I, Known>();
+      in.p1 = in.p1 || changed_in_scan<I, Known, true>();
     } else if constexpr (q == qualifier::P0) {
-      in.p0 = in.p0 || deactivated_in_scan<I, Known>();
+      in.p0 = in.p0 || changed_in_scan<I, Known, false>();
     } else {
       if (!active_now<I, Known>(pou)) return;
       if constexpr (q == qualifier::N) in.n = true;
@@ -2011,17 +2004,15 @@ class chart : public detail::sfc_flags {
       } else {
         // What the last scan's firing left: Tr's targets entered, its sources left (fire_in
         // makes this index only so); step actions read them as the scan's step events.
+        constexpr bool events_read =
+            has_step_actions<detail::step_action_kind::entry> || has_step_actions<detail::step_action_kind::exit>;
         c.entered_ = c.left_ = step_set{};
-        if constexpr (has_step_actions<detail::step_action_kind::entry> ||
-                      has_step_actions<detail::step_action_kind::exit>) {
+        if constexpr (events_read) {
           c.activated_ = all_targets[Tr];
           c.deactivated_ = all_sources[Tr];
         }
         c.template scan_codesys_entered<N, Tr>(pou, elapsed);
-        if constexpr (has_step_actions<detail::step_action_kind::entry> ||
-                      has_step_actions<detail::step_action_kind::exit>) {
-          c.activated_ = c.deactivated_ = step_set{};
-        }
+        if constexpr (events_read) c.activated_ = c.deactivated_ = step_set{};
       }
     }
     template <std::size_t M, std::size_t... J>
